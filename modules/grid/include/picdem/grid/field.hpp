@@ -1,0 +1,119 @@
+#pragma once
+// Grid fields with a halo, indexed by global (i, k), and the two named communication verbs:
+//   forward     : owners' values -> the ghost copies on other ranks,
+//   reverse_add : ghost contributions -> added into the owners' values.
+#include <mpi.h>
+
+#include <cstring>
+#include <vector>
+
+#include "picdem/grid/grid.hpp"
+
+namespace picdem::grid {
+
+/// A staggered quantity over this rank's storage box (owned + halo), row-major, i fastest.
+template <class T>
+class GridArray {
+ public:
+  GridArray() = default;
+  GridArray(const Decomposition& d, Stagger s, T init = T{})
+      : stagger_(s), owned_(d.owned(s)), box_(d.storage(s)), nxs_(box_.nx()),
+        data_(static_cast<std::size_t>(box_.size()), init) {}
+
+  T& operator()(int i, int k) { return data_[index(i, k)]; }
+  const T& operator()(int i, int k) const { return data_[index(i, k)]; }
+  std::size_t index(int i, int k) const {
+    return static_cast<std::size_t>(k - box_.k0) * nxs_ + static_cast<std::size_t>(i - box_.i0);
+  }
+  bool in_storage(int i, int k) const { return box_.contains(i, k); }
+
+  Stagger stagger() const { return stagger_; }
+  const IndexBox& owned() const { return owned_; }
+  const IndexBox& storage() const { return box_; }
+  std::vector<T>& data() { return data_; }
+  const std::vector<T>& data() const { return data_; }
+  void fill(const T& v) { std::fill(data_.begin(), data_.end(), v); }
+
+ private:
+  Stagger stagger_ = Stagger::Cell;
+  IndexBox owned_, box_;
+  int nxs_ = 0;
+  std::vector<T> data_;
+};
+
+using CellField = GridArray<double>;
+using FaceField = GridArray<double>;
+
+/// The pairwise overlaps between this rank's storage and the other ranks' owned samples,
+/// computed once per staggering; then each exchange is one round of non-blocking messages.
+class Halo {
+ public:
+  explicit Halo(const Decomposition& d);
+
+  template <class T>
+  void forward(GridArray<T>& f) const {
+    exchange(f, /*reverse=*/false);
+  }
+  /// Adds every rank's ghost values into the owners' values. Ghost values are left as they
+  /// were; call forward() to make them consistent again.
+  template <class T>
+  void reverse_add(GridArray<T>& f) const {
+    exchange(f, /*reverse=*/true);
+  }
+
+ private:
+  struct Link {
+    int rank;
+    IndexBox mine_in_theirs;  // my owned samples inside their storage
+    IndexBox theirs_in_mine;  // their owned samples inside my storage
+  };
+  const std::vector<Link>& links(Stagger s) const { return links_[static_cast<int>(s)]; }
+
+  template <class T>
+  static void pack(const GridArray<T>& f, const IndexBox& b, std::vector<T>& buf) {
+    buf.clear();
+    for (int k = b.k0; k < b.k1; ++k)
+      for (int i = b.i0; i < b.i1; ++i) buf.push_back(f(i, k));
+  }
+
+  template <class T>
+  void exchange(GridArray<T>& f, bool reverse) const {
+    const auto& ls = links(f.stagger());
+    if (ls.empty()) return;
+    std::vector<std::vector<T>> send(ls.size()), recv(ls.size());
+    std::vector<MPI_Request> req;
+    req.reserve(2 * ls.size());
+    const int tag = 700 + static_cast<int>(f.stagger());
+    for (std::size_t n = 0; n < ls.size(); ++n) {
+      // forward: I send my owned values that sit in their halo; reverse: I send my ghosts of
+      // their owned values.
+      const IndexBox& out = reverse ? ls[n].theirs_in_mine : ls[n].mine_in_theirs;
+      const IndexBox& in = reverse ? ls[n].mine_in_theirs : ls[n].theirs_in_mine;
+      recv[n].resize(static_cast<std::size_t>(in.size()));
+      req.emplace_back();
+      MPI_Irecv(recv[n].data(), static_cast<int>(recv[n].size() * sizeof(T)), MPI_BYTE,
+                ls[n].rank, tag, comm_, &req.back());
+      pack(f, out, send[n]);
+      req.emplace_back();
+      MPI_Isend(send[n].data(), static_cast<int>(send[n].size() * sizeof(T)), MPI_BYTE,
+                ls[n].rank, tag, comm_, &req.back());
+    }
+    MPI_Waitall(static_cast<int>(req.size()), req.data(), MPI_STATUSES_IGNORE);
+    for (std::size_t n = 0; n < ls.size(); ++n) {
+      const IndexBox& in = reverse ? ls[n].mine_in_theirs : ls[n].theirs_in_mine;
+      std::size_t m = 0;
+      for (int k = in.k0; k < in.k1; ++k)
+        for (int i = in.i0; i < in.i1; ++i, ++m) {
+          if (reverse)
+            f(i, k) += recv[n][m];
+          else
+            f(i, k) = recv[n][m];
+        }
+    }
+  }
+
+  MPI_Comm comm_;
+  std::vector<Link> links_[3];
+};
+
+}  // namespace picdem::grid

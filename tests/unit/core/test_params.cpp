@@ -1,0 +1,162 @@
+// Case-file validation: every bad input gives a message naming the key, the value and what is
+// allowed, and is an InputError (the driver turns it into a non-zero exit, never a crash).
+#include <gtest/gtest.h>
+
+#include "picdem/core/error.hpp"
+#include <Teuchos_ParameterList.hpp>
+
+#include "picdem/core/params.hpp"
+
+using namespace picdem::core;
+
+namespace {
+ParamSchema schema() {
+  ParamSchema s;
+  s.section("fluid", "the fluid");
+  s.real("fluid/density", 1000.0, "density").positive();
+  s.real("fluid/flip_ratio", 0.95, "FLIP share").at_least(0).at_most(1);
+  s.integer("grid/nx", 10, "cells").at_least(4);
+  s.boolean("output/png", true, "pictures");
+  s.string("fluid/walls", "free_slip", {"free_slip", "no_slip"}, "wall condition");
+  s.reals("grid/origin", {0.0, 0.0}, "origin").size(2, 2);
+  s.real("time/end", 1.0, "end time").positive().is_required();
+  s.passthrough("solver/MueLu", "verbosity: none\n\"smoother: type\": CHEBYSHEV\n", "MueLu");
+  auto& f = s.family("obstacles", "fixed obstacles");
+  f.variant("box", "a box").reals("lo", {0, 0}, "low corner").size(2, 2);
+  f.variant("box", "a box").reals("hi", {1, 1}, "high corner").size(2, 2);
+  s.check([](const Params& p, std::vector<std::string>& e) {
+    if (p.real("fluid/density") > 5000) e.push_back("key 'fluid/density' too heavy for a fluid");
+  });
+  return s;
+}
+
+std::string error_of(const std::string& text, std::vector<std::string> overrides = {}) {
+  try {
+    read_case_text(text, "case.yaml", overrides, schema());
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+void expect_error(const std::string& text, std::initializer_list<const char*> parts,
+                  std::vector<std::string> overrides = {}) {
+  const std::string msg = error_of(text, overrides);
+  ASSERT_FALSE(msg.empty()) << "accepted bad input:\n" << text;
+  for (const char* p : parts) EXPECT_NE(msg.find(p), std::string::npos) << "'" << p << "' not in: " << msg;
+}
+}  // namespace
+
+TEST(Params, ValidFileResolvesWithDefaults) {
+  auto p = read_case_text("time:\n  end: 2\nfluid:\n  density: 998.2\n", "case.yaml", {}, schema());
+  EXPECT_DOUBLE_EQ(p.real("fluid/density"), 998.2);
+  EXPECT_DOUBLE_EQ(p.real("time/end"), 2.0);  // integer accepted for a real
+  EXPECT_DOUBLE_EQ(p.real("fluid/flip_ratio"), 0.95);
+  EXPECT_EQ(p.integer("grid/nx"), 10);
+  EXPECT_EQ(p.string("fluid/walls"), "free_slip");
+  EXPECT_EQ(p.reals("grid/origin").size(), 2u);
+  EXPECT_TRUE(p.boolean("output/png"));
+  EXPECT_EQ(p.teuchos("solver/MueLu").get<std::string>("smoother: type"), "CHEBYSHEV");
+}
+
+TEST(Params, OverridesAndPassthroughMerge) {
+  auto p = read_case_text(
+      "time:\n  end: 1\nsolver:\n  MueLu:\n    \"smoother: type\": RELAXATION\n", "case.yaml",
+      {"grid/nx=20", "fluid/walls=no_slip"}, schema());
+  EXPECT_EQ(p.integer("grid/nx"), 20);
+  EXPECT_EQ(p.string("fluid/walls"), "no_slip");
+  EXPECT_EQ(p.teuchos("solver/MueLu").get<std::string>("smoother: type"), "RELAXATION");
+  EXPECT_EQ(p.teuchos("solver/MueLu").get<std::string>("verbosity"), "none");
+}
+
+TEST(Params, FamilyMembersValidatedByVariant) {
+  auto p = read_case_text("time:\n  end: 1\nobstacles:\n  wall:\n    type: box\n    hi: [2, 3]\n",
+                          "case.yaml", {}, schema());
+  ASSERT_EQ(p.sublist_names("obstacles").size(), 1u);
+  auto w = p.sub("obstacles/wall");
+  EXPECT_EQ(w.reals("hi")[1], 3.0);
+  EXPECT_EQ(w.reals("lo")[0], 0.0);
+}
+
+// At least fifteen kinds of bad input, each with its message.
+TEST(ParamsBad, UnknownKeySuggestsSpelling) {
+  expect_error("time:\n  end: 1\nfluid:\n  densty: 1000\n",
+               {"unknown key 'fluid/densty'", "did you mean 'fluid/density'", "density"});
+}
+TEST(ParamsBad, UnknownSection) { expect_error("time:\n  end: 1\nfluids: {}\n", {"unknown key 'fluids'"}); }
+TEST(ParamsBad, WrongTypeTextForReal) {
+  expect_error("time:\n  end: 1\nfluid:\n  density: heavy\n",
+               {"'fluid/density'", "expects a real number", "heavy"});
+}
+TEST(ParamsBad, RealForInteger) {
+  expect_error("time:\n  end: 1\ngrid:\n  nx: 12.5\n", {"'grid/nx'", "expects an integer", "12.5"});
+}
+TEST(ParamsBad, NegativeDensity) {
+  expect_error("time:\n  end: 1\nfluid:\n  density: -1000\n",
+               {"'fluid/density'", "-1000", "must be > 0"});
+}
+TEST(ParamsBad, OutOfClosedRange) {
+  expect_error("time:\n  end: 1\nfluid:\n  flip_ratio: 1.5\n",
+               {"'fluid/flip_ratio'", "1.5", "in [0, 1]"});
+}
+TEST(ParamsBad, BelowMinimumInteger) {
+  expect_error("time:\n  end: 1\ngrid:\n  nx: 2\n", {"'grid/nx'", "= 2", ">= 4"});
+}
+TEST(ParamsBad, StringNotAChoice) {
+  expect_error("time:\n  end: 1\nfluid:\n  walls: sticky\n",
+               {"'fluid/walls'", "'sticky'", "free_slip, no_slip"});
+}
+TEST(ParamsBad, BooleanGivenNumber) {
+  expect_error("time:\n  end: 1\noutput:\n  png: 3\n", {"'output/png'", "true or false", "3"});
+}
+TEST(ParamsBad, ArrayWrongSize) {
+  expect_error("time:\n  end: 1\ngrid:\n  origin: [0, 0, 0]\n", {"'grid/origin'", "3 values", "2 values"});
+}
+TEST(ParamsBad, ScalarForArray) {
+  expect_error("time:\n  end: 1\ngrid:\n  origin: 0.5\n", {"'grid/origin'", "list of reals"});
+}
+TEST(ParamsBad, SectionGivenValue) {
+  expect_error("time:\n  end: 1\nfluid: 3\n", {"'fluid' is a section", "density"});
+}
+TEST(ParamsBad, ValueGivenSection) {
+  expect_error("time:\n  end: 1\nfluid:\n  density:\n    a: 1\n", {"'fluid/density'", "not a section"});
+}
+TEST(ParamsBad, MissingRequired) { expect_error("fluid:\n  density: 1000\n", {"missing required key 'time/end'"}); }
+TEST(ParamsBad, EmptyFile) { expect_error("", {"empty case file"}); }
+TEST(ParamsBad, OnlyComments) { expect_error("# nothing here\n\n", {"empty case file"}); }
+TEST(ParamsBad, NotYaml) { expect_error("time: [1, 2\nfluid: {\n", {"not valid YAML", "line"}); }
+TEST(ParamsBad, PlainTextNotYaml) { expect_error("this is not a case file\n", {"not valid YAML"}); }
+TEST(ParamsBad, NulBytes) { expect_error(std::string("time:\n  end: 1\n\0\0", 16), {"NUL"}); }
+TEST(ParamsBad, FamilyUnknownType) {
+  expect_error("time:\n  end: 1\nobstacles:\n  w:\n    type: cone\n",
+               {"'obstacles/w/type'", "'cone'", "box"});
+}
+TEST(ParamsBad, FamilyMissingType) {
+  expect_error("time:\n  end: 1\nobstacles:\n  w:\n    hi: [1, 1]\n", {"'obstacles/w'", "needs a key 'type'"});
+}
+TEST(ParamsBad, FamilyUnknownKey) {
+  expect_error("time:\n  end: 1\nobstacles:\n  w:\n    type: box\n    high: [1, 1]\n",
+               {"unknown key 'obstacles/w/high'", "did you mean 'obstacles/w/hi'"});
+}
+TEST(ParamsBad, CrossCheck) {
+  expect_error("time:\n  end: 1\nfluid:\n  density: 8000\n", {"too heavy"});
+}
+TEST(ParamsBad, OverrideValidatedToo) {
+  expect_error("time:\n  end: 1\n", {"'fluid/density'", "must be > 0"}, {"fluid/density=-3"});
+  expect_error("time:\n  end: 1\n", {"unknown key 'fluid/dens'"}, {"fluid/dens=3"});
+  expect_error("time:\n  end: 1\n", {"expected KEY=VALUE"}, {"fluid/density"});
+}
+TEST(ParamsBad, SeveralProblemsAllListed) {
+  const auto msg = error_of("time:\n  end: -1\nfluid:\n  density: -1\n  densty: 2\n");
+  EXPECT_NE(msg.find("3 problems"), std::string::npos) << msg;
+}
+TEST(ParamsBad, PassthroughMustBeSection) {
+  expect_error("time:\n  end: 1\nsolver:\n  MueLu: 3\n", {"'solver/MueLu'", "section"});
+}
+
+TEST(ParamsReference, ListsEveryKey) {
+  const auto md = schema().reference_markdown();
+  for (const char* k : {"fluid/density", "fluid/flip_ratio", "grid/nx", "output/png", "time/end",
+                        "obstacles/<name>", "lo", "hi", "solver/MueLu"})
+    EXPECT_NE(md.find(k), std::string::npos) << k;
+}
