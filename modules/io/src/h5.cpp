@@ -1,0 +1,67 @@
+#include "h5.hpp"
+
+namespace picdem::io::h5 {
+
+hid_t check(hid_t id, const std::string& what) {
+  if (id < 0) throw std::runtime_error("HDF5 failed: " + what);
+  return id;
+}
+
+void check_status(herr_t status, const std::string& what) {
+  if (status < 0) throw std::runtime_error("HDF5 failed: " + what);
+}
+
+Handle mpio_access(const core::Comm& comm) {
+  Handle p(check(H5Pcreate(H5P_FILE_ACCESS), "H5Pcreate(FILE_ACCESS)"), H5Pclose);
+  check_status(H5Pset_fapl_mpio(p, comm.raw(), MPI_INFO_NULL), "H5Pset_fapl_mpio");
+  return p;
+}
+
+Handle collective_transfer() {
+  Handle p(check(H5Pcreate(H5P_DATASET_XFER), "H5Pcreate(DATASET_XFER)"), H5Pclose);
+  check_status(H5Pset_dxpl_mpio(p, H5FD_MPIO_COLLECTIVE), "H5Pset_dxpl_mpio");
+  return p;
+}
+
+Handle intermediate_groups() {
+  Handle p(check(H5Pcreate(H5P_LINK_CREATE), "H5Pcreate(LINK_CREATE)"), H5Pclose);
+  check_status(H5Pset_create_intermediate_group(p, 1), "H5Pset_create_intermediate_group");
+  return p;
+}
+
+QuietErrors::QuietErrors() {
+  H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+}
+
+QuietErrors::~QuietErrors() {
+  H5Eset_auto2(H5E_DEFAULT, func_, data_);
+}
+
+void write_rows(hid_t file, const std::string& name, hid_t mem_type, const void* data,
+                long long local_rows, long long offset, long long global_rows, int cols) {
+  const int rank = cols > 1 ? 2 : 1;
+  const hsize_t gdims[2] = {static_cast<hsize_t>(global_rows), static_cast<hsize_t>(cols)};
+  Handle fspace(check(H5Screate_simple(rank, gdims, nullptr), "H5Screate_simple " + name),
+                H5Sclose);
+  Handle lcpl = intermediate_groups();
+  Handle dset(
+      check(H5Dcreate2(file, name.c_str(), mem_type, fspace, lcpl, H5P_DEFAULT, H5P_DEFAULT),
+            "H5Dcreate2 " + name),
+      H5Dclose);
+  const hsize_t start[2] = {static_cast<hsize_t>(offset), 0};
+  const hsize_t count[2] = {static_cast<hsize_t>(local_rows), static_cast<hsize_t>(cols)};
+  Handle mspace(check(H5Screate_simple(rank, count, nullptr), "H5Screate_simple mem " + name),
+                H5Sclose);
+  if (local_rows > 0) {
+    check_status(H5Sselect_hyperslab(fspace, H5S_SELECT_SET, start, nullptr, count, nullptr),
+                 "H5Sselect_hyperslab " + name);
+  } else {
+    H5Sselect_none(fspace);
+    H5Sselect_none(mspace);
+  }
+  Handle xfer = collective_transfer();
+  check_status(H5Dwrite(dset, mem_type, mspace, fspace, xfer, data), "H5Dwrite " + name);
+}
+
+}  // namespace picdem::io::h5
