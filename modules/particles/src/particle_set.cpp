@@ -1,0 +1,216 @@
+#include "picdem/particles/particle_set.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+#include "picdem/core/error.hpp"
+#include "picdem/core/rng.hpp"
+
+namespace picdem::particles {
+
+void declare_parameters(core::ParamSchema& schema) {
+  schema.section("particles", "Fluid marker particles: seeding and reseeding.");
+  schema
+      .integer("particles/per_cell_1d", 2,
+               "particles per cell along each axis at seeding (2: 2 x 2 per cell)")
+      .at_least(1)
+      .at_most(8);
+  schema
+      .real("particles/jitter", 0.5,
+            "random offset of seeded particles, as a share of the sub-cell spacing")
+      .at_least(0.0)
+      .at_most(1.0);
+  schema
+      .integer("particles/min_per_cell", 2,
+               "reseeding adds particles in interior fluid cells holding fewer (0: never)")
+      .at_least(0)
+      .at_most(64);
+  schema
+      .integer("particles/max_per_cell", 8,
+               "reseeding removes the particles with the largest ids above this many per cell")
+      .at_least(1)
+      .at_most(256);
+  schema.integer("particles/seed", 1, "seed of the counter-based random numbers").at_least(0);
+  schema.section("transfer", "Particle <-> grid velocity transfer.");
+  schema.string("transfer/scheme", "flip", {"flip", "apic"},
+                "flip: FLIP/PIC blend of grid velocity change and value; apic: affine PIC");
+  schema
+      .real("transfer/flip_ratio", 0.95,
+            "share of FLIP in the FLIP/PIC blend (1: pure FLIP, 0: PIC); flip scheme only")
+      .at_least(0.0)
+      .at_most(1.0);
+  schema.section("advection", "Particle advection through the grid velocity.");
+  schema.string("advection/scheme", "rk2", {"rk2", "rk3"},
+                "rk2: explicit midpoint; rk3: Ralston's third-order Runge-Kutta");
+  schema.check([](const core::Params& p, std::vector<std::string>& errors) {
+    const long long lo = p.integer("particles/min_per_cell");
+    const long long hi = p.integer("particles/max_per_cell");
+    const long long n1 = p.integer("particles/per_cell_1d");
+    if (lo > hi) {
+      std::ostringstream s;
+      s << "key 'particles/min_per_cell' = " << lo << " exceeds 'particles/max_per_cell' = " << hi
+        << "; allowed: min_per_cell <= max_per_cell";
+      errors.push_back(s.str());
+    }
+    if (n1 * n1 > hi) {
+      std::ostringstream s;
+      s << "key 'particles/per_cell_1d' = " << n1 << " seeds " << n1 * n1
+        << " particles per cell, more than 'particles/max_per_cell' = " << hi
+        << "; allowed: per_cell_1d^2 <= max_per_cell";
+      errors.push_back(s.str());
+    }
+  });
+}
+
+ParticleConfig config_from(const core::Params& params) {
+  ParticleConfig c;
+  c.per_cell_1d = static_cast<int>(params.integer("particles/per_cell_1d"));
+  c.jitter = params.real("particles/jitter");
+  c.min_per_cell = static_cast<int>(params.integer("particles/min_per_cell"));
+  c.max_per_cell = static_cast<int>(params.integer("particles/max_per_cell"));
+  c.seed = static_cast<std::uint64_t>(params.integer("particles/seed"));
+  c.transfer =
+      params.string("transfer/scheme") == "apic" ? TransferScheme::Apic : TransferScheme::Flip;
+  c.flip_ratio = params.real("transfer/flip_ratio");
+  c.advection =
+      params.string("advection/scheme") == "rk3" ? AdvectionScheme::Rk3 : AdvectionScheme::Rk2;
+  return c;
+}
+
+int required_halo(const ParticleConfig& /*config*/) {
+  // one face beyond the particle's cell for the 2 x 2 stencil + two cells of motion per step
+  return 3;
+}
+
+void ParticleSet::clear() {
+  resize(0);
+}
+
+void ParticleSet::reserve(std::size_t n) {
+  for (auto* v : {&x, &z, &u, &w, &cxx, &cxz, &czx, &czz}) v->reserve(n);
+  id.reserve(n);
+}
+
+void ParticleSet::resize(std::size_t n) {
+  for (auto* v : {&x, &z, &u, &w, &cxx, &cxz, &czx, &czz}) v->resize(n, 0.0);
+  id.resize(n, 0);
+}
+
+void ParticleSet::push_back_from(const ParticleSet& o, std::size_t n) {
+  x.push_back(o.x[n]);
+  z.push_back(o.z[n]);
+  u.push_back(o.u[n]);
+  w.push_back(o.w[n]);
+  cxx.push_back(o.cxx[n]);
+  cxz.push_back(o.cxz[n]);
+  czx.push_back(o.czx[n]);
+  czz.push_back(o.czz[n]);
+  id.push_back(o.id[n]);
+}
+
+void ParticleSet::push_back(std::int64_t gid, core::Vec2 p, core::Vec2 v, const double (&c)[4]) {
+  x.push_back(p.x);
+  z.push_back(p.z);
+  u.push_back(v.x);
+  w.push_back(v.z);
+  cxx.push_back(c[0]);
+  cxz.push_back(c[1]);
+  czx.push_back(c[2]);
+  czz.push_back(c[3]);
+  id.push_back(gid);
+}
+
+namespace {
+template <class T>
+void keep_in(std::vector<T>& v, const std::vector<char>& keep) {
+  std::size_t m = 0;
+  for (std::size_t n = 0; n < v.size(); ++n)
+    if (keep[n]) v[m++] = v[n];
+  v.resize(m);
+}
+template <class T>
+void permute_in(std::vector<T>& v, const std::vector<std::size_t>& order, std::vector<T>& tmp) {
+  tmp.resize(v.size());
+  for (std::size_t n = 0; n < order.size(); ++n) tmp[n] = v[order[n]];
+  v.swap(tmp);
+}
+}  // namespace
+
+void ParticleSet::keep_if(const std::vector<char>& keep) {
+  for (auto* v : {&x, &z, &u, &w, &cxx, &cxz, &czx, &czz}) keep_in(*v, keep);
+  keep_in(id, keep);
+}
+
+void ParticleSet::permute(const std::vector<std::size_t>& order) {
+  std::vector<double> tmp;
+  for (auto* v : {&x, &z, &u, &w, &cxx, &cxz, &czx, &czz}) permute_in(*v, order, tmp);
+  std::vector<std::int64_t> tmp_id;
+  permute_in(id, order, tmp_id);
+}
+
+ParticleSet seed(const grid::Decomposition& d, const ParticleConfig& config,
+                 const std::function<bool(core::Vec2)>& inside) {
+  const grid::GridSpec& s = d.spec();
+  const core::IndexBox cells = d.owned_cells();
+  const int n1 = config.per_cell_1d;
+  const double sub = s.h / n1;  // sub-cell spacing
+  ParticleSet p;
+  p.spec = s;
+  const double zero[4] = {0.0, 0.0, 0.0, 0.0};
+  for (int k = cells.k0; k < cells.k1; ++k)
+    for (int i = cells.i0; i < cells.i1; ++i) {
+      if (!inside(s.position(grid::Stagger::Cell, i, k))) continue;
+      const auto gid = static_cast<std::uint64_t>(s.cell_gid(i, k));
+      for (int b = 0; b < n1; ++b)
+        for (int a = 0; a < n1; ++a) {
+          const auto n = static_cast<std::uint64_t>(b * n1 + a);
+          // x = x_cell + (a + 1/2 + jitter (r - 1/2)) h / n1
+          const double rx = core::uniform01(config.seed, gid, n, 0);
+          const double rz = core::uniform01(config.seed, gid, n, 1);
+          const core::Vec2 pos{s.origin.x + i * s.h + (a + 0.5 + config.jitter * (rx - 0.5)) * sub,
+                               s.origin.z + k * s.h + (b + 0.5 + config.jitter * (rz - 0.5)) * sub};
+          p.push_back(static_cast<std::int64_t>(gid * n1 * n1 + n), pos, {0.0, 0.0}, zero);
+        }
+    }
+  return p;
+}
+
+std::int64_t first_reseed_id(const grid::GridSpec& spec, const ParticleConfig& config) {
+  return static_cast<std::int64_t>(spec.nx) * spec.nz * config.per_cell_1d * config.per_cell_1d;
+}
+
+void sort_by_cell(ParticleSet& p, const grid::GridSpec& spec) {
+  const std::size_t n = p.size();
+  if (n < 2) return;
+  std::vector<long long> key(n);
+  for (std::size_t m = 0; m < n; ++m) {
+    int i, k;
+    spec.cell_of({p.x[m], p.z[m]}, i, k);
+    key[m] = spec.cell_gid(std::clamp(i, 0, spec.nx - 1), std::clamp(k, 0, spec.nz - 1));
+  }
+  const auto [lo, hi] = std::minmax_element(key.begin(), key.end());
+  const long long k0 = *lo, range = *hi - *lo + 1;
+  std::vector<std::size_t> order(n);
+  if (range > static_cast<long long>(8 * n + 1024)) {
+    for (std::size_t m = 0; m < n; ++m) order[m] = m;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return key[a] != key[b] ? key[a] < key[b] : p.id[a] < p.id[b];
+    });
+  } else {
+    // counting sort by cell, then by id inside each cell (a handful of particles)
+    std::vector<std::size_t> start(static_cast<std::size_t>(range) + 1, 0);
+    for (std::size_t m = 0; m < n; ++m) ++start[static_cast<std::size_t>(key[m] - k0) + 1];
+    for (std::size_t c = 0; c < static_cast<std::size_t>(range); ++c) start[c + 1] += start[c];
+    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t m = 0; m < n; ++m) order[fill[static_cast<std::size_t>(key[m] - k0)]++] = m;
+    for (std::size_t c = 0; c < static_cast<std::size_t>(range); ++c) {
+      // (cell, id) is unique: the order does not depend on the order particles arrived in
+      const auto first = order.begin() + static_cast<std::ptrdiff_t>(start[c]);
+      const auto last = order.begin() + static_cast<std::ptrdiff_t>(start[c + 1]);
+      std::sort(first, last, [&](std::size_t a, std::size_t b) { return p.id[a] < p.id[b]; });
+    }
+  }
+  p.permute(order);
+}
+
+}  // namespace picdem::particles

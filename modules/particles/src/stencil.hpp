@@ -1,0 +1,69 @@
+#pragma once
+// The 2 x 2 face stencil of a point on the MAC grid (internal to the particles module).
+//
+// A u sample (FaceX) sits at (x0 + i h, z0 + (k + 1/2) h), a w sample (FaceZ) at
+// (x0 + (i + 1/2) h, z0 + k h). The stencil of p is the base face (i, k) with the fractions
+// (fx, fz) of p between faces i, i+1 and k, k+1. The base is clamped to faces on the grid, so
+// that near a wall the fractions leave [0, 1] (linear extrapolation over half a cell).
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "picdem/core/error.hpp"
+#include "picdem/grid/field.hpp"
+
+namespace picdem::particles::detail {
+
+struct Stencil {
+  int i = 0, k = 0;
+  double fx = 0.0, fz = 0.0;
+};
+
+inline Stencil stencil(const grid::GridSpec& spec, grid::Stagger s, core::Vec2 p) {
+  // sample-index coordinates of p: u has its samples at whole x and half z, w the reverse
+  const double sx = (p.x - spec.origin.x) / spec.h - (s == grid::Stagger::FaceZ ? 0.5 : 0.0);
+  const double sz = (p.z - spec.origin.z) / spec.h - (s == grid::Stagger::FaceX ? 0.5 : 0.0);
+  const int ni = spec.nx + (s == grid::Stagger::FaceX ? 1 : 0);  // samples along x
+  const int nk = spec.nz + (s == grid::Stagger::FaceZ ? 1 : 0);  // samples along z
+  Stencil st;
+  st.i = std::clamp(static_cast<int>(std::floor(sx)), 0, ni - 2);
+  st.k = std::clamp(static_cast<int>(std::floor(sz)), 0, nk - 2);
+  st.fx = sx - st.i;
+  st.fz = sz - st.k;
+  return st;
+}
+
+/// Throws when the stencil reaches outside the field's storage (the particle left the halo).
+inline void check_in_storage(const grid::FaceField& f, const Stencil& st, core::Vec2 p) {
+  const core::IndexBox& b = f.storage();
+  if (st.i >= b.i0 && st.i + 1 < b.i1 && st.k >= b.k0 && st.k + 1 < b.k1) return;
+  std::ostringstream m;
+  m << "particle at (" << p.x << ", " << p.z << ") is beyond this rank's halo of "
+    << "face indices [" << b.i0 << ", " << b.i1 << ") x [" << b.k0 << ", " << b.k1
+    << "): it moved more than the halo allows in one step (reduce the time step: |v| dt <= 2 h)";
+  throw core::SolverError(m.str());
+}
+
+/// Bilinear value of f over the stencil.
+inline double interpolate(const grid::FaceField& f, const Stencil& st) {
+  const std::size_t n = f.index(st.i, st.k), row = static_cast<std::size_t>(f.storage().nx());
+  const double* d = f.data().data();
+  // u(p) = (1-fx)(1-fz) u00 + fx (1-fz) u10 + (1-fx) fz u01 + fx fz u11
+  return (1.0 - st.fz) * ((1.0 - st.fx) * d[n] + st.fx * d[n + 1]) +
+         st.fz * ((1.0 - st.fx) * d[n + row] + st.fx * d[n + row + 1]);
+}
+
+/// Bilinear value and its gradient (d/dx, d/dz) over the stencil.
+inline double interpolate(const grid::FaceField& f, const Stencil& st, double h, double& ddx,
+                          double& ddz) {
+  const std::size_t n = f.index(st.i, st.k), row = static_cast<std::size_t>(f.storage().nx());
+  const double* d = f.data().data();
+  const double f00 = d[n], f10 = d[n + 1], f01 = d[n + row], f11 = d[n + row + 1];
+  // du/dx = ((1-fz)(u10-u00) + fz (u11-u01)) / h,  du/dz = ((1-fx)(u01-u00) + fx (u11-u10)) / h
+  ddx = ((1.0 - st.fz) * (f10 - f00) + st.fz * (f11 - f01)) / h;
+  ddz = ((1.0 - st.fx) * (f01 - f00) + st.fx * (f11 - f10)) / h;
+  return (1.0 - st.fz) * ((1.0 - st.fx) * f00 + st.fx * f10) +
+         st.fz * ((1.0 - st.fx) * f01 + st.fx * f11);
+}
+
+}  // namespace picdem::particles::detail
