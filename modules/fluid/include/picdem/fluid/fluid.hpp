@@ -1,0 +1,95 @@
+#pragma once
+// Fluid phases on the staggered grid (paper section 2.1, eqs. 1-5), apart from the pressure
+// solve (pressure_solver.hpp):
+//   forces     : u~ = u + dt g + dt nu lap(u)                      (eq. 2 without advection)
+//   walls      : u.n = 0 on the tank walls, tangential ghosts for free-slip / no-slip
+//   divergence : D_c = sum over faces (+/-) E_f u_f                  (eq. 5 right-hand side)
+//   project    : u = u~ - dt/rho grad p on open faces next to fluid
+//   extension  : fluid velocities copied into air faces, layer by layer
+// All functions work on the owned samples of this rank; halo values are read where stencils
+// need them, so the caller forwards the halo of inputs first unless a function says otherwise.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "picdem/core/comm.hpp"
+#include "picdem/core/params.hpp"
+#include "picdem/core/vec2.hpp"
+#include "picdem/grid/field.hpp"
+#include "picdem/grid/grid.hpp"
+
+namespace picdem::fluid {
+
+/// Declares fluid/density, fluid/viscosity, fluid/gravity, fluid/walls and the solver/ keys.
+void declare_parameters(core::ParamSchema& schema);
+
+struct FluidConfig {
+  double rho = 1000.0;       ///< density [kg/m^3]
+  double nu = 1e-6;          ///< kinematic viscosity [m^2/s]
+  core::Vec2 g{0.0, -9.81};  ///< gravity [m/s^2]
+  bool no_slip = false;      ///< tank walls: no-slip (true) or free-slip (false)
+  double h = 0.0;            ///< cell size [m] (grid/cell_size)
+};
+/// Reads the fluid/ keys and grid/cell_size (declared by grid::declare_parameters).
+FluidConfig config_from(const core::Params& params);
+
+/// Ghost width the fluid stencils need (viscosity, projection, divergence): 1. Velocity
+/// extension `layers` deep needs no more: it forwards the halo after every layer.
+constexpr int required_halo() {
+  return 1;
+}
+
+/// Values of grid::CellState (Air, Fluid, Solid) over owned + halo cells.
+using CellStates = grid::GridArray<signed char>;
+
+/// Open length of every face in [0, h]; 0 on the tank walls and where solids close a face.
+struct Apertures {
+  grid::FaceField E_x, E_z;
+};
+/// E = h on every interior face, 0 on the tank's outer faces (the walls), over owned + halo.
+Apertures open_apertures(const grid::Decomposition& d);
+
+/// Adds dt g to every owned face next to a fluid cell (cells' halo must be current). Faces on the
+/// tank walls are included: call enforce_walls afterwards, as the step does before the solve.
+void apply_gravity(grid::FaceField& u, grid::FaceField& w, const CellStates& cells, double dt,
+                   const FluidConfig& cfg);
+
+/// Explicit viscosity u += dt nu lap(u) on interior faces between two fluid cells. Forwards the
+/// halo of u and w and sets the wall ghosts itself. Neighbours that are not next to fluid (the
+/// free surface) are replaced by the face's own value: zero normal gradient there.
+void apply_viscosity(grid::FaceField& u, grid::FaceField& w, const CellStates& cells, double dt,
+                     const FluidConfig& cfg, const grid::Decomposition& d, const grid::Halo& halo);
+
+/// Normal velocity 0 on the tank walls; in the ghost layers outside the tank, the tangential
+/// component is mirrored (free-slip: u_ghost = u_inside, no-slip: u_ghost = -u_inside) and the
+/// normal component is odd about the wall. Call after the halo is forwarded.
+void enforce_walls(grid::FaceField& u, grid::FaceField& w, const FluidConfig& cfg,
+                   const grid::Decomposition& d);
+
+/// D_c = E_x(i+1) u(i+1) - E_x(i) u(i) + E_z(k+1) w(k+1) - E_z(k) w(k) on owned fluid cells
+/// (eq. 5 right-hand side without the solid term), 0 elsewhere. Units m^2/s (per unit depth).
+void divergence(const grid::FaceField& u, const grid::FaceField& w, const Apertures& E,
+                const CellStates& cells, grid::CellField& D);
+
+/// u -= dt/rho (p_right - p_left)/h on owned open faces (E > 0, not on the walls) next to a fluid
+/// cell and not next to a solid cell; p = 0 in air cells (eq. 3). p's halo must be current.
+void project(grid::FaceField& u, grid::FaceField& w, const grid::CellField& p,
+             const CellStates& cells, const Apertures& E, double dt, const FluidConfig& cfg);
+
+/// Faces that carry fluid velocity: interior faces next to a fluid cell, with E > 0 (1), else 0.
+void fluid_faces(const CellStates& cells, const Apertures& E, grid::GridArray<signed char>& u_valid,
+                 grid::GridArray<signed char>& w_valid);
+
+/// Extends velocities from valid faces into invalid ones, `layers` deep: each layer gives every
+/// invalid face with valid neighbours (same component, 4-neighbourhood) their mean and marks it
+/// valid. The validity arrays are copied, not changed; halo forwarded after every layer.
+void extend_velocity(grid::FaceField& u, grid::FaceField& w,
+                     const grid::GridArray<signed char>& u_valid,
+                     const grid::GridArray<signed char>& w_valid, int layers,
+                     const grid::Halo& halo);
+
+/// dt = min(dt_max, cfl h / max|u|) over all ranks' owned faces.
+double cfl_time_step(const grid::FaceField& u, const grid::FaceField& w, double h, double cfl,
+                     double dt_max, const core::Comm& comm);
+
+}  // namespace picdem::fluid

@@ -1,0 +1,97 @@
+#pragma once
+// The augmented pressure Poisson equation (paper eqs. 5-6, METHOD.md section 4):
+//
+//   [ -L_E + dt sum_s A_s M_s^-1 A_s^T ] p = sum_s A_s V*_s - D(u~)
+//
+// -L_E: row c holds sum_f E_f dt/(rho h) on the diagonal and -E_f dt/(rho h) for each fluid
+// neighbour (air neighbours: p = 0; solid neighbours and closed faces: E = 0). A_s has one row
+// a_{s,c} per cut cell c of solid s; M_s = diag(m, m, I); V* = V^n + dt M^-1 (F_g + F_coll).
+// Unknowns are the owned fluid cells, numbered by their global cell id k nx + i. The matrix is a
+// Tpetra::CrsMatrix assembled every step; Belos CG preconditioned by MueLu solves it starting
+// from the previous pressure. Tpetra, Belos and MueLu stay inside pressure_solver.cpp.
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "picdem/core/params.hpp"
+#include "picdem/fluid/fluid.hpp"
+#include "picdem/grid/field.hpp"
+#include "picdem/grid/grid.hpp"
+
+namespace picdem::fluid {
+
+/// One solid whose boundary cuts fluid cells. A rank may pass only part of a solid's cut cells:
+/// the lists of all ranks with the same id are joined. Each (solid, cell) pair must be listed on
+/// exactly one rank; cells that are not fluid on their owner are ignored.
+struct SolidCoupling {
+  std::int64_t id = 0;                    ///< the solid's global id (joins partial lists)
+  std::vector<long long> cells;           ///< global cell ids k nx + i of its cut cells
+  std::vector<std::array<double, 3>> a;   ///< a_{s,c} = (int n_x dl, int n_z dl, int r x n dl)
+  double mass = 0.0, inertia = 0.0;       ///< M_s = diag(m, m, I), per unit depth
+  std::array<double, 3> v_star{0, 0, 0};  ///< V* = V^n + dt M^-1 (F_g + F_coll)
+};
+
+struct SolveStats {
+  int iterations = 0;
+  double relative_residual = 0.0;  ///< ||b - A x|| / ||b||, computed after the solve
+  double setup_seconds = 0.0;      ///< assembly + MueLu setup
+  double solve_seconds = 0.0;      ///< Belos iterations
+  long long unknowns = 0;          ///< global number of fluid cells
+};
+
+/// The assembled system in plain arrays (for tests and diagnostics): rows are this rank's owned
+/// fluid cells by global cell id; every row lists (column cell id, value) sorted by column.
+struct AssembledSystem {
+  std::vector<long long> rows;
+  std::vector<std::vector<std::pair<long long, double>>> entries;
+  std::vector<double> rhs;
+};
+
+class PressureSolver {
+ public:
+  /// Reads solver/tolerance, solver/max_iterations, solver/Belos and solver/MueLu.
+  PressureSolver(const grid::Decomposition& d, const core::Params& params);
+  ~PressureSolver();
+  PressureSolver(const PressureSolver&) = delete;
+  PressureSolver& operator=(const PressureSolver&) = delete;
+
+  /// Assembles and solves; p holds the initial guess on entry (previous pressure) and the
+  /// solution on exit: owned fluid cells solved, owned non-fluid cells 0, halo forwarded.
+  /// `cells` must have a current halo. Throws core::SolverError naming the residual reached
+  /// when the relative true residual stays above solver/tolerance.
+  SolveStats solve(const CellStates& cells, const Apertures& E, const grid::FaceField& u,
+                   const grid::FaceField& w, const std::vector<SolidCoupling>& couplings, double dt,
+                   const FluidConfig& cfg, grid::CellField& p);
+
+  /// The same assembly as solve(), returned as plain arrays instead of solved.
+  AssembledSystem assemble(const CellStates& cells, const Apertures& E, const grid::FaceField& u,
+                           const grid::FaceField& w, const std::vector<SolidCoupling>& couplings,
+                           double dt, const FluidConfig& cfg) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Initialises MPI (if needed), Kokkos and Tpetra for the life of main(); create one before any
+/// PressureSolver::solve (Tpetra::ScopeGuard underneath).
+class LinearAlgebraScope {
+ public:
+  LinearAlgebraScope(int* argc, char*** argv);
+  ~LinearAlgebraScope();
+  LinearAlgebraScope(const LinearAlgebraScope&) = delete;
+  LinearAlgebraScope& operator=(const LinearAlgebraScope&) = delete;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Solves A x = b for an assembled system with the settings of `params` (solver/ keys), starting
+/// from x (owned rows of `system`, same order); returns the statistics. Used by the benchmark
+/// and the tests of the linear solver alone.
+SolveStats solve_system(const grid::Decomposition& d, const core::Params& params,
+                        const AssembledSystem& system, std::vector<double>& x);
+
+}  // namespace picdem::fluid

@@ -1,0 +1,314 @@
+// Grid operators of the fluid step: parameters, apertures, body forces, walls, viscosity,
+// divergence, projection, velocity extension and the CFL time step.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "picdem/core/error.hpp"
+#include "picdem/core/timer.hpp"
+#include "picdem/fluid/fluid.hpp"
+
+namespace picdem::fluid {
+
+using grid::CellState;
+using grid::FaceField;
+using grid::Stagger;
+
+namespace {
+
+constexpr signed char kAir = static_cast<signed char>(CellState::Air);
+constexpr signed char kFluid = static_cast<signed char>(CellState::Fluid);
+constexpr signed char kSolid = static_cast<signed char>(CellState::Solid);
+
+/// State of cell (i, k); cells outside the tank or outside storage count as solid (walls).
+signed char state(const CellStates& cells, int i, int k, int nx, int nz) {
+  if (i < 0 || k < 0 || i >= nx || k >= nz || !cells.in_storage(i, k)) return kSolid;
+  return cells(i, k);
+}
+
+/// The grid's extent (nx, nz) seen from a field: the last block owns the far wall face.
+struct Extent {
+  int nx, nz;
+};
+
+}  // namespace
+
+void declare_parameters(core::ParamSchema& schema) {
+  schema.section("fluid", "The fluid: density, viscosity, gravity and the tank-wall condition.");
+  schema.real("fluid/density", 1000.0, "fluid density rho [kg/m^3]").positive();
+  schema.real("fluid/viscosity", 1e-6, "kinematic viscosity nu [m^2/s] (0: inviscid)")
+      .non_negative();
+  schema.reals("fluid/gravity", {0.0, -9.81}, "gravity (g_x, g_z) [m/s^2]").size(2, 2);
+  schema.string("fluid/walls", "free_slip", {"free_slip", "no_slip"},
+                "tank-wall condition on the tangential velocity");
+  schema.section("solver", "The pressure solve: Belos CG preconditioned by MueLu.");
+  schema.real("solver/tolerance", 1e-8, "relative true residual ||b - A p|| / ||b|| to reach")
+      .positive()
+      .less_than(1.0);
+  schema.integer("solver/max_iterations", 500, "CG iterations allowed per solve").at_least(1);
+  schema.passthrough("solver/Belos",
+                     "\"Implicit Residual Scaling\": \"Norm of RHS\"\n"
+                     "Verbosity: 0\n",
+                     "settings handed to Belos::PseudoBlockCGSolMgr (tolerance and iteration "
+                     "limit come from solver/tolerance and solver/max_iterations)");
+  schema.passthrough("solver/MueLu",
+                     "verbosity: none\n"
+                     "\"multigrid algorithm\": sa\n"
+                     "\"problem: symmetric\": true\n"
+                     "\"aggregation: type\": uncoupled\n"
+                     "\"smoother: type\": CHEBYSHEV\n"
+                     "\"coarse: max size\": 800\n"
+                     "\"repartition: enable\": true\n"
+                     "\"repartition: start level\": 1\n"
+                     "\"repartition: min rows per proc\": 800\n",
+                     "settings handed to MueLu::CreateTpetraPreconditioner; cell-centre "
+                     "coordinates are added as \"Coordinates\" in \"user data\"");
+}
+
+FluidConfig config_from(const core::Params& params) {
+  FluidConfig c;
+  c.rho = params.real("fluid/density");
+  c.nu = params.real("fluid/viscosity");
+  const auto g = params.reals("fluid/gravity");
+  c.g = {g[0], g[1]};
+  c.no_slip = params.string("fluid/walls") == "no_slip";
+  c.h = params.real("grid/cell_size");
+  return c;
+}
+
+Apertures open_apertures(const grid::Decomposition& d) {
+  const int nx = d.spec().nx, nz = d.spec().nz;
+  const double h = d.spec().h;
+  Apertures E{FaceField(d, Stagger::FaceX, 0.0), FaceField(d, Stagger::FaceZ, 0.0)};
+  const auto& bx = E.E_x.storage();
+  for (int k = std::max(bx.k0, 0); k < std::min(bx.k1, nz); ++k)
+    for (int i = std::max(bx.i0, 1); i < std::min(bx.i1, nx); ++i) E.E_x(i, k) = h;
+  const auto& bz = E.E_z.storage();
+  for (int k = std::max(bz.k0, 1); k < std::min(bz.k1, nz); ++k)
+    for (int i = std::max(bz.i0, 0); i < std::min(bz.i1, nx); ++i) E.E_z(i, k) = h;
+  return E;
+}
+
+namespace {
+// The grid size is not stored in a field; every rank's owned FaceX box ends at nx + 1 only on
+// the last block, so the sizes are passed explicitly where needed. Fields built from one
+// Decomposition agree on them.
+Extent extent_of(const grid::Decomposition& d) {
+  return {d.spec().nx, d.spec().nz};
+}
+}  // namespace
+
+void enforce_walls(FaceField& u, FaceField& w, const FluidConfig& cfg,
+                   const grid::Decomposition& d) {
+  const auto [nx, nz] = extent_of(d);
+  // Tangential ghost = t * mirrored inside value: free-slip t = +1, no-slip t = -1.
+  const double t = cfg.no_slip ? -1.0 : 1.0;
+  const auto& bu = u.storage();
+  for (int k = bu.k0; k < bu.k1; ++k) {
+    for (int i = bu.i0; i < bu.i1; ++i) {
+      if (i == 0 || i == nx) u(i, k) = 0.0;
+    }
+    // Normal component odd about the x-walls: u(-j) = -u(j), u(nx + j) = -u(nx - j).
+    for (int i = bu.i0; i < 0; ++i)
+      if (u.in_storage(-i, k)) u(i, k) = -u(-i, k);
+    for (int i = nx + 1; i < bu.i1; ++i)
+      if (u.in_storage(2 * nx - i, k)) u(i, k) = -u(2 * nx - i, k);
+  }
+  // Tangential component about the z-walls (walls halfway between u(k = -1) and u(k = 0)).
+  for (int i = bu.i0; i < bu.i1; ++i) {
+    for (int k = bu.k0; k < 0; ++k)
+      if (u.in_storage(i, -k - 1)) u(i, k) = t * u(i, -k - 1);
+    for (int k = nz; k < bu.k1; ++k)
+      if (u.in_storage(i, 2 * nz - 1 - k)) u(i, k) = t * u(i, 2 * nz - 1 - k);
+  }
+  const auto& bw = w.storage();
+  for (int i = bw.i0; i < bw.i1; ++i) {
+    for (int k = bw.k0; k < bw.k1; ++k)
+      if (k == 0 || k == nz) w(i, k) = 0.0;
+    for (int k = bw.k0; k < 0; ++k)
+      if (w.in_storage(i, -k)) w(i, k) = -w(i, -k);
+    for (int k = nz + 1; k < bw.k1; ++k)
+      if (w.in_storage(i, 2 * nz - k)) w(i, k) = -w(i, 2 * nz - k);
+  }
+  for (int k = bw.k0; k < bw.k1; ++k) {
+    for (int i = bw.i0; i < 0; ++i)
+      if (w.in_storage(-i - 1, k)) w(i, k) = t * w(-i - 1, k);
+    for (int i = nx; i < bw.i1; ++i)
+      if (w.in_storage(2 * nx - 1 - i, k)) w(i, k) = t * w(2 * nx - 1 - i, k);
+  }
+}
+
+void apply_gravity(FaceField& u, FaceField& w, const CellStates& cells, double dt,
+                   const FluidConfig& cfg) {
+  core::ScopedTimer timer("fluid: forces");
+  // Interior faces only: the grid's outer faces have no cell on their outer side.
+  const auto& bu = u.owned();
+  for (int k = bu.k0; k < bu.k1; ++k)
+    for (int i = bu.i0; i < bu.i1; ++i) {
+      if (!cells.in_storage(i - 1, k) || !cells.in_storage(i, k)) continue;
+      if (cells(i - 1, k) != kFluid && cells(i, k) != kFluid) continue;
+      // u~ = u + dt g_x  (eq. 2, body force)
+      u(i, k) += dt * cfg.g.x;
+    }
+  const auto& bw = w.owned();
+  for (int k = bw.k0; k < bw.k1; ++k)
+    for (int i = bw.i0; i < bw.i1; ++i) {
+      if (!cells.in_storage(i, k - 1) || !cells.in_storage(i, k)) continue;
+      if (cells(i, k - 1) != kFluid && cells(i, k) != kFluid) continue;
+      // w~ = w + dt g_z  (eq. 2, body force)
+      w(i, k) += dt * cfg.g.z;
+    }
+}
+
+void apply_viscosity(FaceField& u, FaceField& w, const CellStates& cells, double dt,
+                     const FluidConfig& cfg, const grid::Decomposition& d, const grid::Halo& halo) {
+  core::ScopedTimer timer("fluid: forces");
+  if (cfg.nu == 0.0) return;
+  const auto [nx, nz] = extent_of(d);
+  const double h = d.spec().h;
+  halo.forward(u);
+  halo.forward(w);
+  enforce_walls(u, w, cfg, d);
+  const FaceField u0 = u, w0 = w;
+  auto fluid = [&](int i, int k) { return state(cells, i, k, nx, nz) == kFluid; };
+  // A neighbour face is used when it lies on or beyond a wall (wall value or ghost) or touches
+  // fluid; otherwise (free surface) the centre value stands in: zero normal gradient.
+  auto u_nb = [&](int i, int k, double centre) {
+    if (i <= 0 || i >= nx || k < 0 || k >= nz) return u0(i, k);
+    return fluid(i - 1, k) || fluid(i, k) ? u0(i, k) : centre;
+  };
+  auto w_nb = [&](int i, int k, double centre) {
+    if (k <= 0 || k >= nz || i < 0 || i >= nx) return w0(i, k);
+    return fluid(i, k - 1) || fluid(i, k) ? w0(i, k) : centre;
+  };
+  const double c = dt * cfg.nu / (h * h);
+  const auto& bu = u.owned();
+  for (int k = bu.k0; k < bu.k1; ++k)
+    for (int i = std::max(bu.i0, 1); i < std::min(bu.i1, nx); ++i) {
+      if (!fluid(i - 1, k) || !fluid(i, k)) continue;
+      const double uc = u0(i, k);
+      // u += dt nu (u_E + u_W + u_N + u_S - 4 u_P) / h^2  (eq. 2, viscous term)
+      u(i, k) += c * (u_nb(i + 1, k, uc) + u_nb(i - 1, k, uc) + u_nb(i, k + 1, uc) +
+                      u_nb(i, k - 1, uc) - 4.0 * uc);
+    }
+  const auto& bw = w.owned();
+  for (int k = std::max(bw.k0, 1); k < std::min(bw.k1, nz); ++k)
+    for (int i = bw.i0; i < bw.i1; ++i) {
+      if (!fluid(i, k - 1) || !fluid(i, k)) continue;
+      const double wc = w0(i, k);
+      // w += dt nu (w_E + w_W + w_N + w_S - 4 w_P) / h^2  (eq. 2, viscous term)
+      w(i, k) += c * (w_nb(i + 1, k, wc) + w_nb(i - 1, k, wc) + w_nb(i, k + 1, wc) +
+                      w_nb(i, k - 1, wc) - 4.0 * wc);
+    }
+}
+
+void divergence(const FaceField& u, const FaceField& w, const Apertures& E, const CellStates& cells,
+                grid::CellField& D) {
+  const auto& b = D.owned();
+  for (int k = b.k0; k < b.k1; ++k)
+    for (int i = b.i0; i < b.i1; ++i) {
+      if (cells(i, k) != kFluid) {
+        D(i, k) = 0.0;
+        continue;
+      }
+      // D = E_{i+1/2} u_{i+1/2} - E_{i-1/2} u_{i-1/2} + E_{k+1/2} w_{k+1/2} - E_{k-1/2} w_{k-1/2}
+      // (eq. 5, right-hand side without the solid term)
+      D(i, k) = E.E_x(i + 1, k) * u(i + 1, k) - E.E_x(i, k) * u(i, k) +
+                E.E_z(i, k + 1) * w(i, k + 1) - E.E_z(i, k) * w(i, k);
+    }
+}
+
+void project(FaceField& u, FaceField& w, const grid::CellField& p, const CellStates& cells,
+             const Apertures& E, double dt, const FluidConfig& cfg) {
+  core::ScopedTimer timer("fluid: project");
+  if (cfg.h <= 0.0) throw core::InputError("fluid::project: FluidConfig::h must be the cell size");
+  auto p_of = [&](int i, int k) { return cells(i, k) == kFluid ? p(i, k) : 0.0; };
+  auto open = [&](signed char a, signed char b) {
+    return a != kSolid && b != kSolid && (a == kFluid || b == kFluid);
+  };
+  const double s = dt / (cfg.rho * cfg.h);
+  const auto& bu = u.owned();
+  for (int k = bu.k0; k < bu.k1; ++k)
+    for (int i = bu.i0; i < bu.i1; ++i) {
+      if (E.E_x(i, k) <= 0.0 || !open(cells(i - 1, k), cells(i, k))) continue;
+      // u = u~ - dt/rho (p_{i} - p_{i-1}) / h
+      u(i, k) -= s * (p_of(i, k) - p_of(i - 1, k));
+    }
+  const auto& bw = w.owned();
+  for (int k = bw.k0; k < bw.k1; ++k)
+    for (int i = bw.i0; i < bw.i1; ++i) {
+      if (E.E_z(i, k) <= 0.0 || !open(cells(i, k - 1), cells(i, k))) continue;
+      // w = w~ - dt/rho (p_{k} - p_{k-1}) / h
+      w(i, k) -= s * (p_of(i, k) - p_of(i, k - 1));
+    }
+}
+
+void fluid_faces(const CellStates& cells, const Apertures& E, grid::GridArray<signed char>& u_valid,
+                 grid::GridArray<signed char>& w_valid) {
+  auto fluid = [&](int i, int k) { return cells.in_storage(i, k) && cells(i, k) == kFluid; };
+  const auto& bu = u_valid.storage();
+  for (int k = bu.k0; k < bu.k1; ++k)
+    for (int i = bu.i0; i < bu.i1; ++i)
+      u_valid(i, k) = E.E_x(i, k) > 0.0 && (fluid(i - 1, k) || fluid(i, k)) ? 1 : 0;
+  const auto& bw = w_valid.storage();
+  for (int k = bw.k0; k < bw.k1; ++k)
+    for (int i = bw.i0; i < bw.i1; ++i)
+      w_valid(i, k) = E.E_z(i, k) > 0.0 && (fluid(i, k - 1) || fluid(i, k)) ? 1 : 0;
+}
+
+namespace {
+void extend_one(FaceField& f, grid::GridArray<signed char>& valid, int layers,
+                const grid::Halo& halo) {
+  halo.forward(valid);
+  halo.forward(f);
+  const auto& b = f.owned();
+  std::vector<std::pair<std::size_t, double>> updates;
+  for (int layer = 0; layer < layers; ++layer) {
+    updates.clear();
+    for (int k = b.k0; k < b.k1; ++k)
+      for (int i = b.i0; i < b.i1; ++i) {
+        if (valid(i, k)) continue;
+        double sum = 0.0;
+        int n = 0;
+        const int di[4] = {1, -1, 0, 0}, dk[4] = {0, 0, 1, -1};
+        for (int m = 0; m < 4; ++m) {
+          const int a = i + di[m], c = k + dk[m];
+          if (f.in_storage(a, c) && valid(a, c)) sum += f(a, c), ++n;
+        }
+        // u_f = mean of the valid neighbours (one layer of extension)
+        if (n > 0) updates.emplace_back(f.index(i, k), sum / n);
+      }
+    for (const auto& [idx, v] : updates) {
+      f.data()[idx] = v;
+      valid.data()[idx] = 1;
+    }
+    halo.forward(valid);
+    halo.forward(f);
+  }
+}
+}  // namespace
+
+void extend_velocity(FaceField& u, FaceField& w, const grid::GridArray<signed char>& u_valid,
+                     const grid::GridArray<signed char>& w_valid, int layers,
+                     const grid::Halo& halo) {
+  core::ScopedTimer timer("fluid: extend velocity");
+  auto uv = u_valid;
+  auto wv = w_valid;
+  extend_one(u, uv, layers, halo);
+  extend_one(w, wv, layers, halo);
+}
+
+double cfl_time_step(const FaceField& u, const FaceField& w, double h, double cfl, double dt_max,
+                     const core::Comm& comm) {
+  double vmax = 0.0;
+  for (const FaceField* f : {&u, &w}) {
+    const auto& b = f->owned();
+    for (int k = b.k0; k < b.k1; ++k)
+      for (int i = b.i0; i < b.i1; ++i) vmax = std::max(vmax, std::abs((*f)(i, k)));
+  }
+  vmax = comm.max(vmax);
+  // dt = min(dt_max, CFL h / max|u|)
+  return vmax > 0.0 ? std::min(dt_max, cfl * h / vmax) : dt_max;
+}
+
+}  // namespace picdem::fluid

@@ -1,0 +1,398 @@
+// Assembly of the augmented pressure equation (eqs. 5-6) into a Tpetra::CrsMatrix and its
+// solution by Belos CG preconditioned with MueLu smoothed aggregation. The only file of the
+// project that includes Tpetra, Belos or MueLu.
+#include "picdem/fluid/pressure_solver.hpp"
+
+#include <BelosLinearProblem.hpp>
+#include <BelosPseudoBlockCGSolMgr.hpp>
+#include <BelosTpetraAdapter.hpp>
+#include <MueLu_CreateTpetraPreconditioner.hpp>
+#include <Teuchos_DefaultMpiComm.hpp>
+#include <Tpetra_Core.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Map.hpp>
+#include <Tpetra_MultiVector.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "picdem/core/error.hpp"
+#include "picdem/core/timer.hpp"
+
+namespace picdem::fluid {
+
+namespace {
+
+using Map = Tpetra::Map<>;
+using Matrix = Tpetra::CrsMatrix<>;
+using MV = Tpetra::MultiVector<>;
+using OP = Tpetra::Operator<>;
+using LO = Map::local_ordinal_type;
+using GO = Map::global_ordinal_type;
+using Teuchos::RCP;
+using Teuchos::rcp;
+
+constexpr signed char kFluid = static_cast<signed char>(grid::CellState::Fluid);
+constexpr signed char kSolid = static_cast<signed char>(grid::CellState::Solid);
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/// The linear-solver settings read once from the case.
+struct SolverSettings {
+  double tolerance = 1e-8;
+  int max_iterations = 500;
+  Teuchos::ParameterList belos, muelu;
+};
+
+SolverSettings settings_from(const core::Params& params) {
+  SolverSettings s;
+  s.tolerance = params.real("solver/tolerance");
+  s.max_iterations = static_cast<int>(params.integer("solver/max_iterations"));
+  s.belos = params.teuchos("solver/Belos");
+  s.muelu = params.teuchos("solver/MueLu");
+  return s;
+}
+
+/// Every solid's coupling joined over ranks (partial lists with the same id are concatenated).
+std::map<std::int64_t, SolidCoupling> gather_couplings(const std::vector<SolidCoupling>& mine,
+                                                       const core::Comm& comm) {
+  // Packed as [id, n, m, I, V*0, V*1, V*2, (cell, a0, a1, a2) x n] per solid.
+  std::vector<double> buf;
+  for (const auto& s : mine) {
+    if (s.cells.size() != s.a.size()) {
+      std::ostringstream m;
+      m << "SolidCoupling of solid " << s.id << " has " << s.cells.size() << " cells but "
+        << s.a.size() << " vectors a; they must match";
+      throw core::InputError(m.str());
+    }
+    buf.insert(buf.end(), {static_cast<double>(s.id), static_cast<double>(s.cells.size()), s.mass,
+                           s.inertia, s.v_star[0], s.v_star[1], s.v_star[2]});
+    for (std::size_t n = 0; n < s.cells.size(); ++n)
+      buf.insert(buf.end(), {static_cast<double>(s.cells[n]), s.a[n][0], s.a[n][1], s.a[n][2]});
+  }
+  const std::vector<double> all = comm.size() > 1 ? comm.all_gather(buf) : buf;
+  std::map<std::int64_t, SolidCoupling> joined;
+  for (std::size_t p = 0; p < all.size();) {
+    const auto id = static_cast<std::int64_t>(all[p]);
+    const auto n = static_cast<std::size_t>(all[p + 1]);
+    SolidCoupling& s = joined[id];
+    s.id = id;
+    s.mass = all[p + 2];
+    s.inertia = all[p + 3];
+    s.v_star = {all[p + 4], all[p + 5], all[p + 6]};
+    p += 7;
+    for (std::size_t c = 0; c < n; ++c, p += 4) {
+      s.cells.push_back(static_cast<long long>(all[p]));
+      s.a.push_back({all[p + 1], all[p + 2], all[p + 3]});
+    }
+  }
+  for (const auto& [id, s] : joined)
+    if (!(s.mass > 0.0) || !(s.inertia > 0.0)) {
+      std::ostringstream m;
+      m << "SolidCoupling of solid " << id << ": mass = " << s.mass << ", inertia = " << s.inertia
+        << "; both must be > 0";
+      throw core::InputError(m.str());
+    }
+  return joined;
+}
+
+}  // namespace
+
+struct PressureSolver::Impl {
+  const grid::Decomposition& d;
+  grid::Halo halo;
+  SolverSettings settings;
+  Impl(const grid::Decomposition& dec, const core::Params& params)
+      : d(dec), halo(dec), settings(settings_from(params)) {}
+};
+
+PressureSolver::PressureSolver(const grid::Decomposition& d, const core::Params& params)
+    : impl_(std::make_unique<Impl>(d, params)) {}
+PressureSolver::~PressureSolver() = default;
+
+AssembledSystem PressureSolver::assemble(const CellStates& cells, const Apertures& E,
+                                         const grid::FaceField& u, const grid::FaceField& w,
+                                         const std::vector<SolidCoupling>& couplings, double dt,
+                                         const FluidConfig& cfg) const {
+  core::ScopedTimer timer("fluid: pressure assembly");
+  const grid::Decomposition& d = impl_->d;
+  const grid::GridSpec& g = d.spec();
+  const core::IndexBox own = d.owned_cells();
+  AssembledSystem sys;
+  grid::GridArray<int> row_of(d, grid::Stagger::Cell, -1);
+  for (int k = own.k0; k < own.k1; ++k)
+    for (int i = own.i0; i < own.i1; ++i)
+      if (cells(i, k) == kFluid) {
+        row_of(i, k) = static_cast<int>(sys.rows.size());
+        sys.rows.push_back(g.cell_gid(i, k));
+      }
+  sys.entries.resize(sys.rows.size());
+  sys.rhs.assign(sys.rows.size(), 0.0);
+  grid::CellField D(d, grid::Stagger::Cell, 0.0);
+  divergence(u, w, E, cells, D);
+
+  const double s = dt / (cfg.rho * g.h);
+  for (int k = own.k0; k < own.k1; ++k)
+    for (int i = own.i0; i < own.i1; ++i) {
+      const int r = row_of(i, k);
+      if (r < 0) continue;
+      auto& row = sys.entries[static_cast<std::size_t>(r)];
+      double diag = 0.0;
+      const struct {
+        double E;
+        int i, k;
+      } faces[4] = {{E.E_x(i, k), i - 1, k},
+                    {E.E_x(i + 1, k), i + 1, k},
+                    {E.E_z(i, k), i, k - 1},
+                    {E.E_z(i, k + 1), i, k + 1}};
+      for (const auto& f : faces) {
+        if (f.E <= 0.0 || f.i < 0 || f.k < 0 || f.i >= g.nx || f.k >= g.nz) continue;
+        const signed char nb = cells(f.i, f.k);
+        if (nb == kSolid) continue;
+        // -L_E: diagonal sum_f E_f dt/(rho h); fluid neighbour -E_f dt/(rho h); air: p = 0
+        diag += f.E * s;
+        if (nb == kFluid) row.emplace_back(g.cell_gid(f.i, f.k), -f.E * s);
+      }
+      row.emplace_back(g.cell_gid(i, k), diag);
+      // b = -D(u~)  (eq. 5 with the sign of -L_E)
+      sys.rhs[static_cast<std::size_t>(r)] = -D(i, k);
+    }
+
+  const auto joined = gather_couplings(couplings, d.comm());
+  if (!joined.empty()) {
+    // Which coupling cells are fluid: each owner answers for its cells, summed over ranks.
+    std::vector<double> fluid_flag;
+    for (const auto& [id, sc] : joined)
+      for (long long c : sc.cells) {
+        const int i = static_cast<int>(c % g.nx), k = static_cast<int>(c / g.nx);
+        const bool inside = c >= 0 && k < g.nz;
+        fluid_flag.push_back(inside && own.contains(i, k) && cells(i, k) == kFluid ? 1.0 : 0.0);
+      }
+    d.comm().sum_in_place(fluid_flag);
+    std::size_t flag0 = 0;
+    for (const auto& [id, sc] : joined) {
+      const std::array<double, 3> Minv{1.0 / sc.mass, 1.0 / sc.mass, 1.0 / sc.inertia};
+      const std::size_t n = sc.cells.size();
+      for (std::size_t a = 0; a < n; ++a) {
+        if (fluid_flag[flag0 + a] == 0.0) continue;
+        const long long c1 = sc.cells[a];
+        const int i = static_cast<int>(c1 % g.nx), k = static_cast<int>(c1 / g.nx);
+        if (!own.contains(i, k)) continue;
+        const auto r = static_cast<std::size_t>(row_of(i, k));
+        const auto& a1 = sc.a[a];
+        // b_c += a_{s,c} . V*_s
+        sys.rhs[r] += a1[0] * sc.v_star[0] + a1[1] * sc.v_star[1] + a1[2] * sc.v_star[2];
+        for (std::size_t b = 0; b < n; ++b) {
+          if (fluid_flag[flag0 + b] == 0.0) continue;
+          const auto& a2 = sc.a[b];
+          // dt A_s M_s^-1 A_s^T, entry (c1, c2) = dt a_{c1} . M^-1 a_{c2}
+          const double v =
+              dt * (a1[0] * Minv[0] * a2[0] + a1[1] * Minv[1] * a2[1] + a1[2] * Minv[2] * a2[2]);
+          sys.entries[r].emplace_back(sc.cells[b], v);
+        }
+      }
+      flag0 += n;
+    }
+  }
+  // Sorted by column, duplicates summed.
+  for (auto& row : sys.entries) {
+    std::sort(row.begin(), row.end(),
+              [](const auto& x, const auto& y) { return x.first < y.first; });
+    std::size_t m = 0;
+    for (std::size_t n = 0; n < row.size(); ++n) {
+      if (m > 0 && row[m - 1].first == row[n].first)
+        row[m - 1].second += row[n].second;
+      else
+        row[m++] = row[n];
+    }
+    row.resize(m);
+  }
+  return sys;
+}
+
+namespace {
+
+SolveStats run_solver(const grid::Decomposition& d, const SolverSettings& settings,
+                      const AssembledSystem& sys, std::vector<double>& x) {
+  const auto t0 = std::chrono::steady_clock::now();
+  SolveStats stats;
+  if (!Tpetra::isInitialized())
+    throw core::SolverError(
+        "the pressure solver needs Tpetra initialised: create a fluid::LinearAlgebraScope in "
+        "main()");
+  const core::Comm& comm = d.comm();
+  const grid::GridSpec& g = d.spec();
+  const auto n_local = static_cast<long long>(sys.rows.size());
+  stats.unknowns = comm.sum(n_local);
+  x.resize(sys.rows.size(), 0.0);
+  double b2 = 0.0;
+  for (double v : sys.rhs) b2 += v * v;
+  const double b_norm = std::sqrt(comm.sum(b2));
+  if (stats.unknowns == 0 || b_norm == 0.0) {
+    std::fill(x.begin(), x.end(), 0.0);
+    return stats;
+  }
+
+  RCP<const Teuchos::Comm<int>> tcomm = rcp(new Teuchos::MpiComm<int>(comm.raw()));
+  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+  std::vector<GO> row_gids(sys.rows.begin(), sys.rows.end());
+  RCP<const Map> row_map = rcp(
+      new Map(invalid, Teuchos::ArrayView<const GO>(row_gids.data(), row_gids.size()), 0, tcomm));
+
+  // Column map: the owned rows first (same order), then the other columns by gid.
+  grid::GridArray<int> local_of(d, grid::Stagger::Cell, -1);
+  const core::IndexBox own = d.owned_cells();
+  for (std::size_t r = 0; r < sys.rows.size(); ++r)
+    local_of(static_cast<int>(sys.rows[r] % g.nx), static_cast<int>(sys.rows[r] / g.nx)) =
+        static_cast<int>(r);
+  auto owned_lid = [&](long long gid) {
+    const int i = static_cast<int>(gid % g.nx), k = static_cast<int>(gid / g.nx);
+    return own.contains(i, k) ? local_of(i, k) : -1;
+  };
+  std::vector<GO> remote;
+  std::size_t nnz = 0;
+  for (const auto& row : sys.entries) {
+    nnz += row.size();
+    for (const auto& [c, v] : row)
+      if (owned_lid(c) < 0) remote.push_back(c);
+  }
+  std::sort(remote.begin(), remote.end());
+  remote.erase(std::unique(remote.begin(), remote.end()), remote.end());
+  std::vector<GO> col_gids = row_gids;
+  col_gids.insert(col_gids.end(), remote.begin(), remote.end());
+  RCP<const Map> col_map = rcp(
+      new Map(invalid, Teuchos::ArrayView<const GO>(col_gids.data(), col_gids.size()), 0, tcomm));
+
+  Teuchos::ArrayRCP<std::size_t> row_ptr(sys.rows.size() + 1);
+  Teuchos::ArrayRCP<LO> col_idx(nnz);
+  Teuchos::ArrayRCP<double> vals(nnz);
+  std::size_t m = 0;
+  row_ptr[0] = 0;
+  std::vector<std::pair<LO, double>> tmp;
+  for (std::size_t r = 0; r < sys.entries.size(); ++r) {
+    tmp.clear();
+    for (const auto& [c, v] : sys.entries[r]) {
+      int lid = owned_lid(c);
+      if (lid < 0)
+        lid = static_cast<int>(
+            row_gids.size() + (std::lower_bound(remote.begin(), remote.end(), c) - remote.begin()));
+      tmp.emplace_back(lid, v);
+    }
+    std::sort(tmp.begin(), tmp.end());
+    for (const auto& [lid, v] : tmp) col_idx[m] = lid, vals[m] = v, ++m;
+    row_ptr[r + 1] = m;
+  }
+  RCP<Matrix> A = rcp(new Matrix(row_map, col_map, row_ptr, col_idx, vals));
+  A->fillComplete(row_map, row_map);
+
+  RCP<MV> X = rcp(new MV(row_map, 1)), B = rcp(new MV(row_map, 1));
+  RCP<MV> coords = rcp(new MV(row_map, 2));
+  {
+    auto xv = X->getDataNonConst(0);
+    auto bv = B->getDataNonConst(0);
+    auto cx = coords->getDataNonConst(0);
+    auto cz = coords->getDataNonConst(1);
+    for (std::size_t r = 0; r < sys.rows.size(); ++r) {
+      xv[r] = x[r];
+      bv[r] = sys.rhs[r];
+      const auto c = g.position(grid::Stagger::Cell, static_cast<int>(sys.rows[r] % g.nx),
+                                static_cast<int>(sys.rows[r] / g.nx));
+      cx[r] = c.x, cz[r] = c.z;
+    }
+  }
+
+  Teuchos::ParameterList muelu = settings.muelu;
+  muelu.sublist("user data").set("Coordinates", coords);
+  RCP<OP> prec;
+  {
+    core::ScopedTimer timer("fluid: pressure preconditioner");
+    prec = MueLu::CreateTpetraPreconditioner(RCP<OP>(A), muelu);
+  }
+  stats.setup_seconds = seconds_since(t0);
+
+  const auto t1 = std::chrono::steady_clock::now();
+  auto true_residual = [&]() {
+    MV R(row_map, 1);
+    A->apply(*X, R);
+    R.update(1.0, *B, -1.0);
+    Teuchos::Array<double> norm(1);
+    R.norm2(norm());
+    return norm[0] / b_norm;
+  };
+  {
+    core::ScopedTimer timer("fluid: pressure solve");
+    auto problem = rcp(new Belos::LinearProblem<double, MV, OP>(A, X, B));
+    problem->setLeftPrec(prec);
+    problem->setProblem();
+    auto belos = rcp(new Teuchos::ParameterList(settings.belos));
+    belos->set("Convergence Tolerance", settings.tolerance);
+    belos->set("Maximum Iterations", settings.max_iterations);
+    Belos::PseudoBlockCGSolMgr<double, MV, OP> solver(problem, belos);
+    // The implicit residual may drift from the true one; one restart from the reached x.
+    for (int attempt = 0; attempt < 2; ++attempt) {
+      solver.solve();
+      stats.iterations += solver.getNumIters();
+      stats.relative_residual = true_residual();
+      if (stats.relative_residual <= settings.tolerance) break;
+      problem->setProblem();
+      solver.reset(Belos::Problem);
+    }
+  }
+  stats.solve_seconds = seconds_since(t1);
+  {
+    auto xv = X->getData(0);
+    for (std::size_t r = 0; r < sys.rows.size(); ++r) x[r] = xv[r];
+  }
+  if (!(stats.relative_residual <= settings.tolerance)) {
+    std::ostringstream msg;
+    msg << "pressure solve did not converge: relative true residual " << stats.relative_residual
+        << " after " << stats.iterations << " iterations, solver/tolerance = " << settings.tolerance
+        << " (solver/max_iterations = " << settings.max_iterations << ")";
+    throw core::SolverError(msg.str());
+  }
+  return stats;
+}
+
+}  // namespace
+
+SolveStats PressureSolver::solve(const CellStates& cells, const Apertures& E,
+                                 const grid::FaceField& u, const grid::FaceField& w,
+                                 const std::vector<SolidCoupling>& couplings, double dt,
+                                 const FluidConfig& cfg, grid::CellField& p) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const AssembledSystem sys = assemble(cells, E, u, w, couplings, dt, cfg);
+  const double assembly = seconds_since(t0);
+  const grid::GridSpec& g = impl_->d.spec();
+  std::vector<double> x(sys.rows.size());
+  for (std::size_t r = 0; r < sys.rows.size(); ++r)
+    x[r] = p(static_cast<int>(sys.rows[r] % g.nx), static_cast<int>(sys.rows[r] / g.nx));
+  SolveStats stats = run_solver(impl_->d, impl_->settings, sys, x);
+  stats.setup_seconds += assembly;
+  const core::IndexBox own = impl_->d.owned_cells();
+  for (int k = own.k0; k < own.k1; ++k)
+    for (int i = own.i0; i < own.i1; ++i) p(i, k) = 0.0;
+  for (std::size_t r = 0; r < sys.rows.size(); ++r)
+    p(static_cast<int>(sys.rows[r] % g.nx), static_cast<int>(sys.rows[r] / g.nx)) = x[r];
+  impl_->halo.forward(p);
+  return stats;
+}
+
+SolveStats solve_system(const grid::Decomposition& d, const core::Params& params,
+                        const AssembledSystem& system, std::vector<double>& x) {
+  return run_solver(d, settings_from(params), system, x);
+}
+
+struct LinearAlgebraScope::Impl {
+  Tpetra::ScopeGuard guard;
+  Impl(int* argc, char*** argv) : guard(argc, argv) {}
+};
+LinearAlgebraScope::LinearAlgebraScope(int* argc, char*** argv)
+    : impl_(std::make_unique<Impl>(argc, argv)) {}
+LinearAlgebraScope::~LinearAlgebraScope() = default;
+
+}  // namespace picdem::fluid
