@@ -1,0 +1,789 @@
+// Cut cells by intersecting each body boundary once with every grid line it spans (not with every
+// cell edge). Everything is done in grid units, xi = (x - x0) / h, zeta = (z - z0) / h, where the
+// grid lines are the integers. Decisions are exact: a segment end on a line is a comparison of
+// doubles, a circle against a line is decided with CGAL's exact rationals when the double filter
+// cannot tell. Every intersection point is computed once and used both for the face lengths and
+// for the boundary pieces, which makes the discrete divergence theorem hold to round-off.
+#include "picdem/geometry/cut_cells.hpp"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Exact_rational.h>
+#include <CGAL/Polygon_2_algorithms.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <sstream>
+#include <stdexcept>
+
+#include "picdem/core/error.hpp"
+#include "picdem/geometry/polygon.hpp"
+
+namespace picdem::geometry {
+
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Q = CGAL::Exact_rational;
+
+constexpr double kTwoPi = 2.0 * M_PI;
+
+/// Sign of |j - c| - rho, exactly (j, c, rho as given doubles).
+int compare_distance(double j, double c, double rho) {
+  const double d = std::fabs(j - c) - rho;
+  const double bound =
+      8.0 * std::numeric_limits<double>::epsilon() * (std::fabs(j) + std::fabs(c) + rho);
+  if (d > bound) return 1;
+  if (d < -bound) return -1;
+  // (j - c)^2 - rho^2, exactly.
+  const Q dq = Q(j) - Q(c);
+  const Q e = dq * dq - Q(rho) * Q(rho);
+  return CGAL::sign(e);
+}
+
+/// zeta where the segment a-b meets the line xi = X (a.x and b.x on either side or on it).
+double cross_at_x(Vec2 a, Vec2 b, double X) {
+  if (a.x == X) return a.z;
+  if (b.x == X) return b.z;
+  if (b.x < a.x) std::swap(a, b);
+  const double z = a.z + (X - a.x) / (b.x - a.x) * (b.z - a.z);
+  return std::clamp(z, std::min(a.z, b.z), std::max(a.z, b.z));
+}
+double cross_at_z(Vec2 a, Vec2 b, double Z) {
+  if (a.z == Z) return a.x;
+  if (b.z == Z) return b.x;
+  if (b.z < a.z) std::swap(a, b);
+  const double x = a.x + (Z - a.z) / (b.z - a.z) * (b.x - a.x);
+  return std::clamp(x, std::min(a.x, b.x), std::max(a.x, b.x));
+}
+
+/// A body boundary loop in grid units: a polygon (segments) or a full circle.
+struct Item {
+  int tag = 0;  // solid index, or -1-k for obstacle k
+  bool circle = false;
+  std::vector<Vec2> verts;  // polygon loop, CCW
+  Vec2 c;                   // circle centre
+  double rho = 0.0;
+  Vec2 com;  // centre of mass (solids), grid units
+  double lo_x = 0, hi_x = 0, lo_z = 0, hi_z = 0;
+  std::function<bool(const Vec2&)> contains_world;
+};
+
+/// A piece of boundary inside one cell (grid units).
+struct Sub {
+  Vec2 p0, p1;
+  bool arc = false;
+  double dphi = 0.0;  // arc span
+  int i = 0, k = 0;
+  int line0 = 0, line1 = 0;  // +1+j on vertical line j, -1-k on horizontal line k, 0 none (ends)
+};
+
+struct Event {
+  double t;  // parameter along the piece (segment t, arc angle)
+  Vec2 p;
+  int line;
+};
+
+struct Interval {
+  double lo, hi;
+};
+
+int floor_int(double v) {
+  return static_cast<int>(std::floor(v));
+}
+
+bool is_integer(double v) {
+  return v == std::floor(v);
+}
+
+/// Cell of a boundary piece that crosses no grid line in its interior.
+void assign_cell(Sub& s, const Item& it) {
+  const Vec2 d = s.p1 - s.p0;
+  Vec2 m;
+  if (!s.arc) {
+    m = 0.5 * (s.p0 + s.p1);
+  } else {
+    const double a0 = std::atan2(s.p0.z - it.c.z, s.p0.x - it.c.x);
+    const double am = a0 + 0.5 * s.dphi;
+    m = it.c + it.rho * Vec2{std::cos(am), std::sin(am)};
+  }
+  // Column.
+  if (!s.arc && d.x == 0.0 && is_integer(s.p0.x)) {
+    // A piece lying on a vertical line belongs to the cell its outward normal points into.
+    s.i = d.z > 0 ? static_cast<int>(s.p0.x) : static_cast<int>(s.p0.x) - 1;
+  } else if (s.arc && s.line0 > 0 && s.line0 == s.line1) {
+    const double j = s.line0 - 1;
+    const bool away = s.dphi < M_PI;  // minor arc: beyond the line; major: on the centre's side
+    const bool right = (it.c.x < j) == away;
+    s.i = right ? static_cast<int>(j) : static_cast<int>(j) - 1;
+  } else {
+    const double j = std::round(m.x);
+    if (s.arc && std::fabs(m.x - j) < 1e-9) {
+      // Touching a line (tangent) without crossing it: the arc is on the centre's side.
+      s.i = it.c.x < j ? static_cast<int>(j) - 1 : static_cast<int>(j);
+    } else {
+      s.i = floor_int(m.x);
+    }
+  }
+  // Row.
+  if (!s.arc && d.z == 0.0 && is_integer(s.p0.z)) {
+    s.k = d.x < 0 ? static_cast<int>(s.p0.z) : static_cast<int>(s.p0.z) - 1;
+  } else if (s.arc && s.line0 < 0 && s.line0 == s.line1) {
+    const double k = -1 - s.line0;
+    const bool away = s.dphi < M_PI;
+    const bool up = (it.c.z < k) == away;
+    s.k = up ? static_cast<int>(k) : static_cast<int>(k) - 1;
+  } else {
+    const double k = std::round(m.z);
+    if (s.arc && std::fabs(m.z - k) < 1e-9) {
+      s.k = it.c.z < k ? static_cast<int>(k) - 1 : static_cast<int>(k);
+    } else {
+      s.k = floor_int(m.z);
+    }
+  }
+}
+
+// 1/2 (x dz - z dx) integrated over the piece, relative to the centre of its cell.
+double area_term(const Sub& s, const Item& it) {
+  const Vec2 c{s.i + 0.5, s.k + 0.5};
+  double a = 0.5 * core::cross(s.p0 - c, s.p1 - c);
+  if (s.arc) {
+    // circular segment between chord and arc: rho^2 / 2 (dphi - sin dphi)
+    const double x = s.dphi;
+    const double f =
+        x < 1e-2 ? x * x * x / 6.0 * (1.0 - x * x / 20.0 * (1.0 - x * x / 42.0)) : x - std::sin(x);
+    a += 0.5 * it.rho * it.rho * f;
+  }
+  return a;
+}
+
+/// Per-call working memory, reused from body to body.
+struct Builder {
+  GridWindow win;
+  IndexBox W;  // window grown by one cell
+  int nwx = 0, nwz = 0;
+  std::vector<std::vector<Interval>> gx, gz;  // covered intervals on each line of W
+  std::vector<double> covered, best_solid_area, best_obstacle_area;
+  std::vector<int> best_solid, best_obstacle;
+  std::vector<WettedPiece> pieces;
+
+  // body scratch
+  IndexBox B;
+  std::vector<std::vector<Interval>> lx, lz;  // this body's intervals per line of B
+  std::vector<std::vector<std::pair<double, int>>> ex_plus, ex_minus, ez_plus, ez_minus;
+  std::vector<double> cx, cz, term;
+  std::vector<unsigned char> touched;
+  std::vector<Sub> subs;
+  std::vector<Event> events;
+
+  long long cell(int i, int k) const { return (i - W.i0) + static_cast<long long>(k - W.k0) * nwx; }
+};
+
+void merge(std::vector<Interval>& v) {
+  if (v.size() < 2) return;
+  std::sort(v.begin(), v.end(), [](const Interval& a, const Interval& b) { return a.lo < b.lo; });
+  std::size_t n = 0;
+  for (std::size_t j = 1; j < v.size(); ++j) {
+    if (v[j].lo <= v[n].hi) {
+      v[n].hi = std::max(v[n].hi, v[j].hi);
+    } else {
+      v[++n] = v[j];
+    }
+  }
+  v.resize(n + 1);
+}
+
+/// Intervals where the winding number of the sorted (position, +1/-1) events is positive.
+void sweep(std::vector<std::pair<double, int>>& ev, std::vector<Interval>& out) {
+  std::sort(ev.begin(), ev.end());
+  int w = 0;
+  double start = 0.0;
+  for (const auto& [z, d] : ev) {
+    const int before = w;
+    w += d;
+    if (before <= 0 && w > 0) start = z;
+    if (before > 0 && w <= 0 && z > start) out.push_back({start, z});
+  }
+}
+
+/// Adds the covered length of merged intervals `v` on [lo_cell, hi_cell) faces into `c`.
+void distribute(const std::vector<Interval>& v, int c0, int c1, double* c) {
+  for (const auto& iv : v) {
+    const int a = std::max(c0, floor_int(iv.lo)), b = std::min(c1 - 1, floor_int(iv.hi));
+    for (int k = a; k <= b; ++k) {
+      const double len = std::min(iv.hi, k + 1.0) - std::max(iv.lo, static_cast<double>(k));
+      if (len > 0) c[k - c0] += len;
+    }
+  }
+}
+
+void split_polygon(const Item& it, Builder& bd) {
+  const std::size_t n = it.verts.size();
+  for (std::size_t e = 0; e < n; ++e) {
+    const Vec2 a = it.verts[e], b = it.verts[(e + 1) % n];
+    auto& ev = bd.events;
+    ev.clear();
+    ev.push_back({0.0, a, 0});
+    if (a.x != b.x) {
+      const int j0 = std::max(bd.W.i0, floor_int(std::min(a.x, b.x)) + 1);
+      const int j1 = std::min(bd.W.i1, static_cast<int>(std::ceil(std::max(a.x, b.x))) - 1);
+      for (int j = j0; j <= j1; ++j) {
+        ev.push_back({(j - a.x) / (b.x - a.x), {double(j), cross_at_x(a, b, j)}, 1 + j});
+      }
+    }
+    if (a.z != b.z) {
+      const int k0 = std::max(bd.W.k0, floor_int(std::min(a.z, b.z)) + 1);
+      const int k1 = std::min(bd.W.k1, static_cast<int>(std::ceil(std::max(a.z, b.z))) - 1);
+      for (int k = k0; k <= k1; ++k) {
+        ev.push_back({(k - a.z) / (b.z - a.z), {cross_at_z(a, b, k), double(k)}, -1 - k});
+      }
+    }
+    std::sort(ev.begin() + 1, ev.end(), [](const Event& p, const Event& q) { return p.t < q.t; });
+    ev.push_back({1.0, b, 0});
+    for (std::size_t j = 0; j + 1 < ev.size(); ++j) {
+      if (ev[j].p == ev[j + 1].p) continue;
+      Sub s;
+      s.p0 = ev[j].p;
+      s.p1 = ev[j + 1].p;
+      s.line0 = ev[j].line;
+      s.line1 = ev[j + 1].line;
+      assign_cell(s, it);
+      bd.subs.push_back(s);
+    }
+    // Coverage events on the lines this edge reaches, for the lines shifted by -eps and +eps.
+    const int dir_x = b.x > a.x ? 1 : -1;
+    for (int j = std::max(bd.B.i0, static_cast<int>(std::ceil(std::min(a.x, b.x))));
+         j <= std::min(bd.B.i1, floor_int(std::max(a.x, b.x))); ++j) {
+      if ((a.x > j) != (b.x > j)) bd.ex_plus[j - bd.B.i0].push_back({cross_at_x(a, b, j), dir_x});
+      if ((a.x >= j) != (b.x >= j))
+        bd.ex_minus[j - bd.B.i0].push_back({cross_at_x(a, b, j), dir_x});
+    }
+    // Along a horizontal line the solid is on the left: travelling -zeta, it lies at +xi.
+    const int dir_z = b.z > a.z ? -1 : 1;
+    for (int k = std::max(bd.B.k0, static_cast<int>(std::ceil(std::min(a.z, b.z))));
+         k <= std::min(bd.B.k1, floor_int(std::max(a.z, b.z))); ++k) {
+      if ((a.z > k) != (b.z > k)) bd.ez_plus[k - bd.B.k0].push_back({cross_at_z(a, b, k), dir_z});
+      if ((a.z >= k) != (b.z >= k))
+        bd.ez_minus[k - bd.B.k0].push_back({cross_at_z(a, b, k), dir_z});
+    }
+  }
+  for (int j = bd.B.i0; j <= bd.B.i1; ++j) {
+    auto& v = bd.lx[j - bd.B.i0];
+    sweep(bd.ex_plus[j - bd.B.i0], v);
+    sweep(bd.ex_minus[j - bd.B.i0], v);
+    merge(v);
+  }
+  for (int k = bd.B.k0; k <= bd.B.k1; ++k) {
+    auto& v = bd.lz[k - bd.B.k0];
+    sweep(bd.ez_plus[k - bd.B.k0], v);
+    sweep(bd.ez_minus[k - bd.B.k0], v);
+    merge(v);
+  }
+}
+
+void split_circle(const Item& it, Builder& bd) {
+  auto& ev = bd.events;
+  ev.clear();
+  const Vec2 c = it.c;
+  const double rho = it.rho;
+  for (int j = std::max(bd.B.i0, floor_int(c.x - rho));
+       j <= std::min(bd.B.i1, floor_int(c.x + rho) + 1); ++j) {
+    if (compare_distance(j, c.x, rho) >= 0) continue;
+    const double d = j - c.x;
+    // s = sqrt(rho^2 - d^2)
+    const double s = std::sqrt(std::max(0.0, (rho - d) * (rho + d)));
+    bd.lx[j - bd.B.i0].push_back({c.z - s, c.z + s});
+    if (j < bd.W.i0 || j > bd.W.i1) continue;
+    double lo = std::atan2(-s, d), hi = std::atan2(s, d);
+    if (lo < 0) lo += kTwoPi;
+    if (hi < 0) hi += kTwoPi;
+    ev.push_back({lo, {double(j), c.z - s}, 1 + j});
+    ev.push_back({hi, {double(j), c.z + s}, 1 + j});
+  }
+  for (int k = std::max(bd.B.k0, floor_int(c.z - rho));
+       k <= std::min(bd.B.k1, floor_int(c.z + rho) + 1); ++k) {
+    if (compare_distance(k, c.z, rho) >= 0) continue;
+    const double d = k - c.z;
+    const double s = std::sqrt(std::max(0.0, (rho - d) * (rho + d)));
+    bd.lz[k - bd.B.k0].push_back({c.x - s, c.x + s});
+    if (k < bd.W.k0 || k > bd.W.k1) continue;
+    double left = std::atan2(d, -s), right = std::atan2(d, s);
+    if (left < 0) left += kTwoPi;
+    if (right < 0) right += kTwoPi;
+    ev.push_back({right, {c.x + s, double(k)}, -1 - k});
+    ev.push_back({left, {c.x - s, double(k)}, -1 - k});
+  }
+  if (ev.empty()) {
+    Sub s;
+    s.arc = true;
+    s.p0 = s.p1 = c + Vec2{rho, 0.0};
+    s.dphi = kTwoPi;
+    s.i = floor_int(c.x);
+    s.k = floor_int(c.z);
+    bd.subs.push_back(s);
+    return;
+  }
+  std::sort(ev.begin(), ev.end(), [](const Event& p, const Event& q) { return p.t < q.t; });
+  for (std::size_t j = 0; j < ev.size(); ++j) {
+    const Event& e0 = ev[j];
+    const Event& e1 = ev[(j + 1) % ev.size()];
+    double dphi = e1.t - e0.t;
+    if (j + 1 == ev.size()) dphi += kTwoPi;
+    if (dphi <= 0.0 || (e0.p == e1.p && dphi < M_PI)) continue;
+    Sub s;
+    s.arc = true;
+    s.p0 = e0.p;
+    s.p1 = e1.p;
+    s.dphi = dphi;
+    s.line0 = e0.line;
+    s.line1 = e1.line;
+    assign_cell(s, it);
+    bd.subs.push_back(s);
+  }
+}
+
+void add_item(const Item& it, const std::vector<Item>& items, const std::vector<int>& neighbours,
+              Builder& bd) {
+  // Cells that this item can touch: its bounding box plus one cell (pieces lying on a line
+  // belong to the cell outside), clipped to the grown window.
+  bd.B = IndexBox{floor_int(it.lo_x) - 1, floor_int(it.hi_x) + 2, floor_int(it.lo_z) - 1,
+                  floor_int(it.hi_z) + 2}
+             .intersect(bd.W);
+  if (bd.B.empty()) return;
+  const int bnx = bd.B.nx(), bnz = bd.B.nz();
+  auto reset = [](auto& v, std::size_t n) {
+    if (v.size() < n) v.resize(n);
+    for (std::size_t j = 0; j < n; ++j) v[j].clear();
+  };
+  reset(bd.lx, bnx + 1);
+  reset(bd.lz, bnz + 1);
+  reset(bd.ex_plus, bnx + 1);
+  reset(bd.ex_minus, bnx + 1);
+  reset(bd.ez_plus, bnz + 1);
+  reset(bd.ez_minus, bnz + 1);
+  bd.subs.clear();
+  if (it.circle) {
+    split_circle(it, bd);
+  } else {
+    split_polygon(it, bd);
+  }
+  // Per-face covered lengths of this item over B.
+  bd.cx.assign(static_cast<std::size_t>(bnx + 1) * bnz, 0.0);
+  bd.cz.assign(static_cast<std::size_t>(bnx) * (bnz + 1), 0.0);
+  for (int j = 0; j <= bnx; ++j) {
+    merge(bd.lx[j]);
+    std::vector<double> col(bnz, 0.0);
+    distribute(bd.lx[j], bd.B.k0, bd.B.k1, col.data());
+    for (int k = 0; k < bnz; ++k) bd.cx[j + static_cast<std::size_t>(k) * (bnx + 1)] = col[k];
+    auto& g = bd.gx[bd.B.i0 + j - bd.W.i0];
+    g.insert(g.end(), bd.lx[j].begin(), bd.lx[j].end());
+  }
+  for (int k = 0; k <= bnz; ++k) {
+    merge(bd.lz[k]);
+    distribute(bd.lz[k], bd.B.i0, bd.B.i1, &bd.cz[static_cast<std::size_t>(k) * bnx]);
+    auto& g = bd.gz[bd.B.k0 + k - bd.W.k0];
+    g.insert(g.end(), bd.lz[k].begin(), bd.lz[k].end());
+  }
+  // Boundary pieces: drop those inside another body (union), add area terms, chain by cell.
+  bd.term.assign(static_cast<std::size_t>(bnx) * bnz, 0.0);
+  bd.touched.assign(static_cast<std::size_t>(bnx) * bnz, 0);
+  const GridWindow& w = bd.win;
+  auto world = [&w](const Vec2& u) { return w.origin + w.h * u; };
+  std::vector<WettedPiece> chain;
+  for (const Sub& s : bd.subs) {
+    if (!bd.B.contains(s.i, s.k)) continue;
+    bool hidden = false;
+    if (!neighbours.empty()) {
+      const Vec2 mu = s.arc ? 0.5 * (s.p0 + s.p1) : 0.5 * (s.p0 + s.p1);
+      Vec2 m = mu;
+      if (s.arc) {
+        const double a0 = std::atan2(s.p0.z - it.c.z, s.p0.x - it.c.x) + 0.5 * s.dphi;
+        m = it.c + it.rho * Vec2{std::cos(a0), std::sin(a0)};
+      }
+      for (int o : neighbours) {
+        const Item& other = items[o];
+        if (m.x < other.lo_x || m.x > other.hi_x || m.z < other.lo_z || m.z > other.hi_z) continue;
+        if (other.contains_world(world(m))) {
+          hidden = true;
+          break;
+        }
+      }
+    }
+    if (hidden) continue;
+    const std::size_t c = (s.i - bd.B.i0) + static_cast<std::size_t>(s.k - bd.B.k0) * bnx;
+    bd.term[c] += area_term(s, it);
+    bd.touched[c] = 1;
+    const Vec2 d = s.p1 - s.p0;
+    WettedPiece p;
+    p.body = it.tag;
+    p.i = s.i;
+    p.k = s.k;
+    p.p0 = world(s.p0);
+    p.p1 = world(s.p1);
+    // integral of n dl = (d zeta, -d xi) h for any curve with the body on its left
+    p.n_dl = w.h * Vec2{d.z, -d.x};
+    if (it.tag >= 0) {
+      // (r x n) dl = -d(|r|^2 / 2): -(p1 - p0) . ((p0 + p1) / 2 - X); on an arc about c,
+      // -(p1 - p0) . (c - X)
+      const Vec2 lever = s.arc ? it.c - it.com : 0.5 * (s.p0 + s.p1) - it.com;
+      p.r_cross_n_dl = -w.h * w.h * core::dot(d, lever);
+    }
+    p.length = w.h * (s.arc ? it.rho * s.dphi : core::norm(d));
+    if (!chain.empty() && chain.back().i == p.i && chain.back().k == p.k &&
+        chain.back().p1 == p.p0) {
+      auto& q = chain.back();
+      q.p1 = p.p1;
+      q.n_dl += p.n_dl;
+      q.r_cross_n_dl += p.r_cross_n_dl;
+      q.length += p.length;
+    } else {
+      chain.push_back(p);
+    }
+  }
+  // The loop is closed: its last run joins the first when they share a cell.
+  if (chain.size() > 1 && chain.back().i == chain.front().i && chain.back().k == chain.front().k &&
+      chain.back().p1 == chain.front().p0) {
+    auto& q = chain.front();
+    q.p0 = chain.back().p0;
+    q.n_dl += chain.back().n_dl;
+    q.r_cross_n_dl += chain.back().r_cross_n_dl;
+    q.length += chain.back().length;
+    chain.pop_back();
+  }
+  bd.pieces.insert(bd.pieces.end(), chain.begin(), chain.end());
+  // Covered area per cell: (1/4) sum of covered face lengths + sum of 1/2 (x dz - z dx).
+  for (int k = 0; k < bnz; ++k) {
+    for (int i = 0; i < bnx; ++i) {
+      const std::size_t c = i + static_cast<std::size_t>(k) * bnx;
+      const double faces = bd.cx[i + static_cast<std::size_t>(k) * (bnx + 1)] +
+                           bd.cx[i + 1 + static_cast<std::size_t>(k) * (bnx + 1)] +
+                           bd.cz[i + static_cast<std::size_t>(k) * bnx] +
+                           bd.cz[i + static_cast<std::size_t>(k + 1) * bnx];
+      if (faces == 0.0 && !bd.touched[c]) continue;
+      const double area = std::clamp(0.25 * faces + bd.term[c], 0.0, 1.0);
+      const long long g = bd.cell(bd.B.i0 + i, bd.B.k0 + k);
+      bd.covered[g] += area;
+      if (it.tag >= 0) {
+        if (area > bd.best_solid_area[g]) {
+          bd.best_solid_area[g] = area;
+          bd.best_solid[g] = it.tag;
+        }
+      } else if (area > bd.best_obstacle_area[g]) {
+        bd.best_obstacle_area[g] = area;
+        bd.best_obstacle[g] = -1 - it.tag;
+      }
+    }
+  }
+}
+
+Item make_polygon_item(int tag, const std::vector<Vec2>& world_verts, const GridWindow& w) {
+  Item it;
+  it.tag = tag;
+  it.lo_x = it.lo_z = INFINITY;
+  it.hi_x = it.hi_z = -INFINITY;
+  for (const auto& p : world_verts) {
+    const Vec2 u = (p - w.origin) / w.h;
+    it.verts.push_back(u);
+    it.lo_x = std::min(it.lo_x, u.x);
+    it.hi_x = std::max(it.hi_x, u.x);
+    it.lo_z = std::min(it.lo_z, u.z);
+    it.hi_z = std::max(it.hi_z, u.z);
+  }
+  return it;
+}
+
+}  // namespace
+
+CutCells build_cut_cells(const GridWindow& window, const std::vector<SolidPlacement>& solids,
+                         const std::vector<Obstacle>& obstacles, const CutCellOptions& options) {
+  if (!(window.h > 0.0)) {
+    std::ostringstream m;
+    m << "cut cells: grid cell size h = " << window.h << " is not allowed: it must be > 0";
+    throw core::InputError(m.str());
+  }
+  Builder bd;
+  bd.win = window;
+  bd.W = window.cells.grown(1);
+  bd.nwx = bd.W.nx();
+  bd.nwz = bd.W.nz();
+  const std::size_t ncell = static_cast<std::size_t>(bd.nwx) * bd.nwz;
+  bd.gx.resize(bd.nwx + 1);
+  bd.gz.resize(bd.nwz + 1);
+  bd.covered.assign(ncell, 0.0);
+  bd.best_solid_area.assign(ncell, -1.0);
+  bd.best_obstacle_area.assign(ncell, -1.0);
+  bd.best_solid.assign(ncell, -1);
+  bd.best_obstacle.assign(ncell, -1);
+
+  // Items in grid units.
+  std::vector<Item> items;
+  const core::Box2 wbox{window.origin + window.h * Vec2{double(bd.W.i0), double(bd.W.k0)},
+                  window.origin + window.h * Vec2{double(bd.W.i1), double(bd.W.k1)}};
+  for (std::size_t s = 0; s < solids.size(); ++s) {
+    const auto& sp = solids[s];
+    if (!sp.shape)
+      throw core::InputError("cut cells: solid " + std::to_string(sp.id) + " has no shape");
+    const double R = sp.shape->bounding_radius();
+    if (sp.pose.x.x + R < wbox.lo.x || sp.pose.x.x - R > wbox.hi.x || sp.pose.x.z + R < wbox.lo.z ||
+        sp.pose.x.z - R > wbox.hi.z) {
+      continue;
+    }
+    const Vec2 com = (sp.pose.x - window.origin) / window.h;
+    std::vector<Vec2> verts;
+    bool has_arc = false, has_segment = false;
+    for (const auto& piece : sp.shape->boundary()) {
+      if (const auto* seg = std::get_if<Segment>(&piece)) {
+        verts.push_back(sp.pose.to_world(seg->a));
+        has_segment = true;
+      } else {
+        const auto& a = std::get<Arc>(piece);
+        if (has_arc || !(a.phi1 - a.phi0 >= kTwoPi)) {
+          throw core::InputError("cut cells: solid " + std::to_string(sp.id) + " of kind '" +
+                                 sp.shape->kind() +
+                                 "' has a partial arc; cut cells take polygons and full circles");
+        }
+        has_arc = true;
+        Item it;
+        it.tag = static_cast<int>(s);
+        it.circle = true;
+        it.c = (sp.pose.to_world(a.centre) - window.origin) / window.h;
+        it.rho = a.radius / window.h;
+        it.lo_x = it.c.x - it.rho;
+        it.hi_x = it.c.x + it.rho;
+        it.lo_z = it.c.z - it.rho;
+        it.hi_z = it.c.z + it.rho;
+        it.com = com;
+        items.push_back(it);
+      }
+    }
+    if (has_arc && has_segment) {
+      throw core::InputError("cut cells: solid " + std::to_string(sp.id) + " of kind '" +
+                             sp.shape->kind() + "' mixes arcs and segments; not supported");
+    }
+    if (has_segment) {
+      Item it = make_polygon_item(static_cast<int>(s), verts, window);
+      it.com = com;
+      items.push_back(std::move(it));
+    }
+    const ShapePtr shape = sp.shape;
+    const Pose pose = sp.pose;
+    items.back().contains_world = [shape, pose](const Vec2& p) {
+      return shape->contains(pose.to_body(p));
+    };
+  }
+  for (std::size_t o = 0; o < obstacles.size(); ++o) {
+    for (const auto& poly : obstacles[o].polygons) {
+      Item it = make_polygon_item(-1 - static_cast<int>(o), poly, window);
+      if (it.hi_x < bd.W.i0 - 1 || it.lo_x > bd.W.i1 + 1 || it.hi_z < bd.W.k0 - 1 ||
+          it.lo_z > bd.W.k1 + 1) {
+        continue;
+      }
+      std::vector<K::Point_2> pts;
+      for (const auto& p : poly) pts.emplace_back(p.x, p.z);
+      it.contains_world = [pts](const Vec2& p) {
+        return CGAL::bounded_side_2(pts.begin(), pts.end(), K::Point_2(p.x, p.z), K()) !=
+               CGAL::ON_UNBOUNDED_SIDE;
+      };
+      items.push_back(std::move(it));
+    }
+  }
+  // Items whose boxes overlap (candidates for hiding each other's boundary).
+  std::vector<std::vector<int>> neighbours(items.size());
+  {
+    std::vector<int> order(items.size());
+    for (std::size_t j = 0; j < items.size(); ++j) order[j] = static_cast<int>(j);
+    std::sort(order.begin(), order.end(),
+              [&items](int a, int b) { return items[a].lo_x < items[b].lo_x; });
+    for (std::size_t a = 0; a < order.size(); ++a) {
+      const Item& p = items[order[a]];
+      for (std::size_t b = a + 1; b < order.size() && items[order[b]].lo_x <= p.hi_x; ++b) {
+        const Item& q = items[order[b]];
+        if (q.lo_z <= p.hi_z && p.lo_z <= q.hi_z) {
+          neighbours[order[a]].push_back(order[b]);
+          neighbours[order[b]].push_back(order[a]);
+        }
+      }
+    }
+    for (auto& nb : neighbours) std::sort(nb.begin(), nb.end());
+  }
+  for (std::size_t j = 0; j < items.size(); ++j) add_item(items[j], items, neighbours[j], bd);
+
+  // Union of the covered intervals on every line -> open face lengths.
+  CutCells cc;
+  cc.window = window;
+  cc.store = bd.W;
+  cc.ex.assign(static_cast<std::size_t>(bd.nwx + 1) * bd.nwz, 1.0);
+  cc.ez.assign(static_cast<std::size_t>(bd.nwx) * (bd.nwz + 1), 1.0);
+  std::vector<double> col(bd.nwz);
+  for (int j = 0; j <= bd.nwx; ++j) {
+    auto& v = bd.gx[j];
+    if (v.empty()) continue;
+    merge(v);
+    std::fill(col.begin(), col.end(), 0.0);
+    distribute(v, bd.W.k0, bd.W.k1, col.data());
+    for (int k = 0; k < bd.nwz; ++k)
+      cc.ex[j + static_cast<std::size_t>(k) * (bd.nwx + 1)] -= col[k];
+  }
+  std::vector<double> row(bd.nwx);
+  for (int k = 0; k <= bd.nwz; ++k) {
+    auto& v = bd.gz[k];
+    if (v.empty()) continue;
+    merge(v);
+    std::fill(row.begin(), row.end(), 0.0);
+    distribute(v, bd.W.i0, bd.W.i1, row.data());
+    for (int i = 0; i < bd.nwx; ++i) cc.ez[i + static_cast<std::size_t>(k) * bd.nwx] -= row[i];
+  }
+  for (auto& e : cc.ex) e = std::max(0.0, e);
+  for (auto& e : cc.ez) e = std::max(0.0, e);
+  cc.fraction.resize(ncell);
+  for (std::size_t c = 0; c < ncell; ++c) cc.fraction[c] = 1.0 - std::min(1.0, bd.covered[c]);
+  cc.body = bd.best_solid;
+  cc.obstacle = bd.best_obstacle;
+  cc.tiny.assign(ncell, 0);
+
+  // Tiny cells: fraction below the threshold and still open somewhere -> dropped.
+  auto exi = [&](int i, int k) -> double& {
+    return cc.ex[(i - bd.W.i0) + static_cast<std::size_t>(k - bd.W.k0) * (bd.nwx + 1)];
+  };
+  auto ezi = [&](int i, int k) -> double& {
+    return cc.ez[(i - bd.W.i0) + static_cast<std::size_t>(k - bd.W.k0) * bd.nwx];
+  };
+  for (int k = bd.W.k0; k < bd.W.k1; ++k) {
+    for (int i = bd.W.i0; i < bd.W.i1; ++i) {
+      const long long c = bd.cell(i, k);
+      if (cc.fraction[c] < options.tiny_fraction &&
+          (exi(i, k) > 0 || exi(i + 1, k) > 0 || ezi(i, k) > 0 || ezi(i, k + 1) > 0)) {
+        cc.tiny[c] = 1;
+      }
+    }
+  }
+  std::vector<WettedPiece> closing;
+  auto open_parts = [](const std::vector<Interval>& covered, double a, double b) {
+    std::vector<Interval> open;
+    double at = a;
+    for (const auto& iv : covered) {
+      if (iv.hi <= at || iv.lo >= b) continue;
+      if (iv.lo > at) open.push_back({at, iv.lo});
+      at = std::max(at, iv.hi);
+    }
+    if (at < b) open.push_back({at, b});
+    return open;
+  };
+  for (int k = bd.W.k0; k < bd.W.k1; ++k) {
+    for (int i = bd.W.i0; i < bd.W.i1; ++i) {
+      const long long c = bd.cell(i, k);
+      if (!cc.tiny[c]) continue;
+      const bool solid_owner =
+          bd.best_solid_area[c] >= bd.best_obstacle_area[c] && bd.best_solid[c] >= 0;
+      const int tag = solid_owner ? bd.best_solid[c] : -1 - bd.best_obstacle[c];
+      const Item* owner = nullptr;
+      for (const auto& it : items) {
+        if (it.tag == tag) owner = &it;
+      }
+      // Faces: (neighbour i, k, vertical?, line index, dropped cell on the low side?)
+      struct F {
+        int ni, nk;
+        bool vertical;
+        int line;
+        bool low;
+      };
+      const F faces[4] = {{i - 1, k, true, i, false},
+                          {i + 1, k, true, i + 1, true},
+                          {i, k - 1, false, k, false},
+                          {i, k + 1, false, k + 1, true}};
+      for (const F& f : faces) {
+        double& E = f.vertical ? exi(f.line, k) : ezi(i, f.line);
+        if (E <= 0 || !bd.W.contains(f.ni, f.nk) || cc.tiny[bd.cell(f.ni, f.nk)]) continue;
+        const auto& cov = f.vertical ? bd.gx[f.line - bd.W.i0] : bd.gz[f.line - bd.W.k0];
+        const double a = f.vertical ? k : i;
+        for (const auto& iv : open_parts(cov, a, a + 1.0)) {
+          // Outward normal of the enlarged body points into the neighbour.
+          Vec2 p0, p1;
+          if (f.vertical) {
+            p0 = {double(f.line), f.low ? iv.lo : iv.hi};
+            p1 = {double(f.line), f.low ? iv.hi : iv.lo};
+          } else {
+            p0 = {f.low ? iv.hi : iv.lo, double(f.line)};
+            p1 = {f.low ? iv.lo : iv.hi, double(f.line)};
+          }
+          const Vec2 d = p1 - p0;
+          WettedPiece p;
+          p.body = tag;
+          p.i = f.ni;
+          p.k = f.nk;
+          p.p0 = window.origin + window.h * p0;
+          p.p1 = window.origin + window.h * p1;
+          p.n_dl = window.h * Vec2{d.z, -d.x};
+          if (tag >= 0 && owner) {
+            p.r_cross_n_dl = -window.h * window.h * core::dot(d, 0.5 * (p0 + p1) - owner->com);
+          }
+          p.length = window.h * core::norm(d);
+          p.closes_tiny_cell = true;
+          closing.push_back(p);
+          if (tag >= 0 && cc.body[bd.cell(f.ni, f.nk)] < 0) cc.body[bd.cell(f.ni, f.nk)] = tag;
+        }
+      }
+    }
+  }
+  for (int k = bd.W.k0; k < bd.W.k1; ++k) {
+    for (int i = bd.W.i0; i < bd.W.i1; ++i) {
+      const long long c = bd.cell(i, k);
+      if (!cc.tiny[c]) continue;
+      exi(i, k) = exi(i + 1, k) = ezi(i, k) = ezi(i, k + 1) = 0.0;
+      cc.fraction[c] = 0.0;
+    }
+  }
+  bd.pieces.insert(bd.pieces.end(), closing.begin(), closing.end());
+  // Keep the window's pieces outside dropped cells, in cell order, then body order.
+  for (const auto& p : bd.pieces) {
+    if (window.cells.contains(p.i, p.k) && !cc.tiny[bd.cell(p.i, p.k)]) cc.pieces.push_back(p);
+  }
+  std::stable_sort(cc.pieces.begin(), cc.pieces.end(),
+                   [](const WettedPiece& a, const WettedPiece& b) {
+                     if (a.k != b.k) return a.k < b.k;
+                     if (a.i != b.i) return a.i < b.i;
+                     if (a.body != b.body)
+                       return (a.body >= 0 ? a.body : 1000000000 - a.body) <
+                              (b.body >= 0 ? b.body : 1000000000 - b.body);
+                     return a.closes_tiny_cell < b.closes_tiny_cell;
+                   });
+  return cc;
+}
+
+namespace {
+[[noreturn]] void out_of_window(const char* what, int i, int k, const IndexBox& b) {
+  std::ostringstream m;
+  m << "CutCells::" << what << "(" << i << ", " << k << ") is outside the window [" << b.i0 << ", "
+    << b.i1 << ") x [" << b.k0 << ", " << b.k1 << ")";
+  throw std::out_of_range(m.str());
+}
+}  // namespace
+
+double CutCells::E_x(int i, int k) const {
+  const auto& b = window.cells;
+  if (i < b.i0 || i > b.i1 || k < b.k0 || k >= b.k1) out_of_window("E_x", i, k, b);
+  return window.h * ex[(i - store.i0) + static_cast<std::size_t>(k - store.k0) * (store.nx() + 1)];
+}
+double CutCells::E_z(int i, int k) const {
+  const auto& b = window.cells;
+  if (i < b.i0 || i >= b.i1 || k < b.k0 || k > b.k1) out_of_window("E_z", i, k, b);
+  return window.h * ez[(i - store.i0) + static_cast<std::size_t>(k - store.k0) * store.nx()];
+}
+double CutCells::fluid_fraction(int i, int k) const {
+  if (!window.cells.contains(i, k)) out_of_window("fluid_fraction", i, k, window.cells);
+  return fraction[(i - store.i0) + static_cast<std::size_t>(k - store.k0) * store.nx()];
+}
+int CutCells::cutting_body(int i, int k) const {
+  if (!window.cells.contains(i, k)) out_of_window("cutting_body", i, k, window.cells);
+  return body[(i - store.i0) + static_cast<std::size_t>(k - store.k0) * store.nx()];
+}
+int CutCells::cutting_obstacle(int i, int k) const {
+  if (!window.cells.contains(i, k)) out_of_window("cutting_obstacle", i, k, window.cells);
+  return obstacle[(i - store.i0) + static_cast<std::size_t>(k - store.k0) * store.nx()];
+}
+bool CutCells::dropped(int i, int k) const {
+  if (!window.cells.contains(i, k)) out_of_window("dropped", i, k, window.cells);
+  return tiny[(i - store.i0) + static_cast<std::size_t>(k - store.k0) * store.nx()] != 0;
+}
+
+}  // namespace picdem::geometry
