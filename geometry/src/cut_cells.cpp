@@ -69,19 +69,27 @@ struct Item {
   std::function<bool(const Vec2&)> contains_world;
 };
 
+/// A grid line: vertical (xi = index) or horizontal (zeta = index); kind 0 = none.
+struct Line {
+  int kind = 0;
+  int index = 0;
+  bool operator==(const Line& o) const { return kind == o.kind && index == o.index; }
+};
+constexpr int kVertical = 1, kHorizontal = 2;
+
 /// A piece of boundary inside one cell (grid units).
 struct Sub {
   Vec2 p0, p1;
   bool arc = false;
   double dphi = 0.0;  // arc span
   int i = 0, k = 0;
-  int line0 = 0, line1 = 0;  // +1+j on vertical line j, -1-k on horizontal line k, 0 none (ends)
+  Line line0, line1;  // the grid lines the end points lie on (none for original end points)
 };
 
 struct Event {
   double t;  // parameter along the piece (segment t, arc angle)
   Vec2 p;
-  int line;
+  Line line;
 };
 
 struct Interval {
@@ -111,8 +119,8 @@ void assign_cell(Sub& s, const Item& it) {
   if (!s.arc && d.x == 0.0 && is_integer(s.p0.x)) {
     // A piece lying on a vertical line belongs to the cell its outward normal points into.
     s.i = d.z > 0 ? static_cast<int>(s.p0.x) : static_cast<int>(s.p0.x) - 1;
-  } else if (s.arc && s.line0 > 0 && s.line0 == s.line1) {
-    const double j = s.line0 - 1;
+  } else if (s.arc && s.line0.kind == kVertical && s.line0 == s.line1) {
+    const double j = s.line0.index;
     const bool away = s.dphi < M_PI;  // minor arc: beyond the line; major: on the centre's side
     const bool right = (it.c.x < j) == away;
     s.i = right ? static_cast<int>(j) : static_cast<int>(j) - 1;
@@ -128,8 +136,8 @@ void assign_cell(Sub& s, const Item& it) {
   // Row.
   if (!s.arc && d.z == 0.0 && is_integer(s.p0.z)) {
     s.k = d.x < 0 ? static_cast<int>(s.p0.z) : static_cast<int>(s.p0.z) - 1;
-  } else if (s.arc && s.line0 < 0 && s.line0 == s.line1) {
-    const double k = -1 - s.line0;
+  } else if (s.arc && s.line0.kind == kHorizontal && s.line0 == s.line1) {
+    const double k = s.line0.index;
     const bool away = s.dphi < M_PI;
     const bool up = (it.c.z < k) == away;
     s.k = up ? static_cast<int>(k) : static_cast<int>(k) - 1;
@@ -223,23 +231,23 @@ void split_polygon(const Item& it, Builder& bd) {
     const Vec2 a = it.verts[e], b = it.verts[(e + 1) % n];
     auto& ev = bd.events;
     ev.clear();
-    ev.push_back({0.0, a, 0});
+    ev.push_back({0.0, a, {}});
     if (a.x != b.x) {
       const int j0 = std::max(bd.W.i0, floor_int(std::min(a.x, b.x)) + 1);
       const int j1 = std::min(bd.W.i1, static_cast<int>(std::ceil(std::max(a.x, b.x))) - 1);
       for (int j = j0; j <= j1; ++j) {
-        ev.push_back({(j - a.x) / (b.x - a.x), {double(j), cross_at_x(a, b, j)}, 1 + j});
+        ev.push_back({(j - a.x) / (b.x - a.x), {double(j), cross_at_x(a, b, j)}, {kVertical, j}});
       }
     }
     if (a.z != b.z) {
       const int k0 = std::max(bd.W.k0, floor_int(std::min(a.z, b.z)) + 1);
       const int k1 = std::min(bd.W.k1, static_cast<int>(std::ceil(std::max(a.z, b.z))) - 1);
       for (int k = k0; k <= k1; ++k) {
-        ev.push_back({(k - a.z) / (b.z - a.z), {cross_at_z(a, b, k), double(k)}, -1 - k});
+        ev.push_back({(k - a.z) / (b.z - a.z), {cross_at_z(a, b, k), double(k)}, {kHorizontal, k}});
       }
     }
     std::sort(ev.begin() + 1, ev.end(), [](const Event& p, const Event& q) { return p.t < q.t; });
-    ev.push_back({1.0, b, 0});
+    ev.push_back({1.0, b, {}});
     for (std::size_t j = 0; j + 1 < ev.size(); ++j) {
       if (ev[j].p == ev[j + 1].p) continue;
       Sub s;
@@ -297,8 +305,8 @@ void split_circle(const Item& it, Builder& bd) {
     double lo = std::atan2(-s, d), hi = std::atan2(s, d);
     if (lo < 0) lo += kTwoPi;
     if (hi < 0) hi += kTwoPi;
-    ev.push_back({lo, {double(j), c.z - s}, 1 + j});
-    ev.push_back({hi, {double(j), c.z + s}, 1 + j});
+    ev.push_back({lo, {double(j), c.z - s}, {kVertical, j}});
+    ev.push_back({hi, {double(j), c.z + s}, {kVertical, j}});
   }
   for (int k = std::max(bd.B.k0, floor_int(c.z - rho));
        k <= std::min(bd.B.k1, floor_int(c.z + rho) + 1); ++k) {
@@ -310,8 +318,8 @@ void split_circle(const Item& it, Builder& bd) {
     double left = std::atan2(d, -s), right = std::atan2(d, s);
     if (left < 0) left += kTwoPi;
     if (right < 0) right += kTwoPi;
-    ev.push_back({right, {c.x + s, double(k)}, -1 - k});
-    ev.push_back({left, {c.x - s, double(k)}, -1 - k});
+    ev.push_back({right, {c.x + s, double(k)}, {kHorizontal, k}});
+    ev.push_back({left, {c.x - s, double(k)}, {kHorizontal, k}});
   }
   if (ev.empty()) {
     Sub s;
@@ -518,7 +526,7 @@ CutCells build_cut_cells(const GridWindow& window, const std::vector<SolidPlacem
   // Items in grid units.
   std::vector<Item> items;
   const core::Box2 wbox{window.origin + window.h * Vec2{double(bd.W.i0), double(bd.W.k0)},
-                  window.origin + window.h * Vec2{double(bd.W.i1), double(bd.W.k1)}};
+                        window.origin + window.h * Vec2{double(bd.W.i1), double(bd.W.k1)}};
   for (std::size_t s = 0; s < solids.size(); ++s) {
     const auto& sp = solids[s];
     if (!sp.shape)
