@@ -1,0 +1,56 @@
+#pragma once
+// Case-file keys of the DEM (section `dem`) and of the solids (family `solids`), and the plain
+// structs built from them.
+#include <vector>
+
+#include "picdem/core/params.hpp"
+#include "picdem/core/solid_state.hpp"
+#include "picdem/core/vec2.hpp"
+#include "picdem/geometry/shape.hpp"
+
+namespace picdem::dem {
+
+/// Tangential spring: the paper's one-step displacement U_eta dt_DEM (eq. 8), or the displacement
+/// accumulated over the contact (Zhang et al. 2009), which is history to checkpoint.
+enum class TangentialModel { OneStep, Accumulated };
+
+/// Velocity used in the position updates of eqs. 22 and 24: the paper's U^n + U_k (the velocity at
+/// the start of the fluid step), or U_{k-1} + U_k (trapezoid within each subcycle).
+enum class PositionUpdate { StepStart, SubcycleStart };
+
+struct DemConfig {
+  double alpha = 0.4;      ///< damping tuning parameter (eq. 11)
+  double psi = 0.3;        ///< Poisson ratio (eqs. 12-13)
+  double mu = 0.3;         ///< maximum static friction coefficient (eq. 15)
+  double theta = 0.01;     ///< penetration coefficient (eq. 10)
+  double gamma = 150.0;    ///< time-step coefficient (eq. 18)
+  double gap_cells = 2.0;  ///< imaginary gap in cells (eq. 19: 2 h)
+  TangentialModel tangential = TangentialModel::OneStep;
+  PositionUpdate position_update = PositionUpdate::StepStart;
+  double h = 0.0;  ///< grid cell size [m]: gap = gap_cells h (eq. 19), k_xi from eq. 10
+  core::Vec2 gravity{0.0, -9.81};  ///< body force per unit mass added in eq. 21's step (1)
+  double g_stiffness = 9.81;       ///< ||g|| in eq. 10 (kept when gravity is switched off)
+  double skin = 0.0;  ///< neighbour-list skin [m]; 0: a fifth of the largest bounding radius
+
+  double gap() const { return gap_cells * h; }
+};
+
+/// One solid of a case: its initial state (id, pose, velocities), shape and density. Mass and
+/// inertia in `state` are density x the shape's area / polar moment.
+struct SolidSpec {
+  core::SolidState state;
+  geometry::ShapePtr shape;
+  double density = 0.0;
+};
+
+/// Declares dem/* and the `solids` family (variants disk, polygon, polygon_file, cylinder_stack).
+void declare_parameters(core::ParamSchema& schema);
+
+/// The DEM settings of a validated case; `h` is the grid cell size.
+DemConfig config_from(const core::Params& params, double h);
+
+/// The initial solids of a validated case, ids 0, 1, 2, ... in file order (a stack numbers its
+/// cylinders layer by layer from the bottom, each layer from the wall outwards).
+std::vector<SolidSpec> solids_from(const core::Params& params);
+
+}  // namespace picdem::dem

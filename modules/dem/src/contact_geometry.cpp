@@ -1,0 +1,209 @@
+#include "picdem/dem/contact_geometry.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace picdem::dem {
+
+using geometry::Arc;
+using geometry::Segment;
+
+namespace {
+
+constexpr double two_pi = 6.283185307179586;
+
+/// Angle of the direction d measured from phi0, in [0, 2 pi).
+double angle_from(double phi0, const Vec2& d) {
+  double a = std::atan2(d.z, d.x) - phi0;
+  a = std::fmod(a, two_pi);
+  if (a < 0.0) a += two_pi;
+  return a;
+}
+
+bool in_arc(const Arc& a, const Vec2& d) {
+  return angle_from(a.phi0, d) <= a.phi1 - a.phi0;
+}
+
+Vec2 arc_point(const Arc& a, double phi) {
+  return a.centre + a.radius * Vec2{std::cos(phi), std::sin(phi)};
+}
+
+ClosestPoints make(const Vec2& p, const Vec2& q) {
+  return {p, q, core::norm(q - p), false};
+}
+
+void keep_min(ClosestPoints& best, const ClosestPoints& c) {
+  if (c.distance < best.distance) best = c;
+}
+
+/// Like keep_min, but a face-to-face result wins a tie (within round-off of the distances).
+void keep_min_prefer_face(ClosestPoints& best, const ClosestPoints& c) {
+  if (!std::isfinite(best.distance)) {
+    best = c;
+    return;
+  }
+  const double tol = 1e-9 * (1.0 + best.distance);
+  if (c.distance < best.distance - tol ||
+      (c.face && !best.face && c.distance <= best.distance + tol))
+    best = c;
+}
+
+ClosestPoints swap_sides(const ClosestPoints& c) {
+  return {c.on_b, c.on_a, c.distance, c.face};
+}
+
+bool segments_cross(const Segment& s, const Segment& t, Vec2& where) {
+  const Vec2 r = s.b - s.a, q = t.b - t.a;
+  const double den = core::cross(r, q);
+  if (den == 0.0) return false;
+  const double u = core::cross(t.a - s.a, q) / den, v = core::cross(t.a - s.a, r) / den;
+  if (u < 0.0 || u > 1.0 || v < 0.0 || v > 1.0) return false;
+  where = s.a + u * r;
+  return true;
+}
+
+ClosestPoints segment_segment(const Segment& s, const Segment& t) {
+  Vec2 x;
+  if (segments_cross(s, t, x)) return {x, x, 0.0, false};
+  const Vec2 r = s.b - s.a, q = t.b - t.a;
+  const double l2 = core::norm2(r);
+  if (l2 > 0.0 && std::abs(core::cross(r, q)) <= 1e-12 * std::sqrt(l2 * core::norm2(q))) {
+    // parallel: the middle of the stretch where they face each other
+    const double ua = core::dot(t.a - s.a, r) / l2, ub = core::dot(t.b - s.a, r) / l2;
+    const double lo = std::max(0.0, std::min(ua, ub)), hi = std::min(1.0, std::max(ua, ub));
+    if (lo <= hi) {
+      const Vec2 p = s.a + 0.5 * (lo + hi) * r;
+      ClosestPoints c = make(p, closest_on_segment(t, p));
+      c.face = true;
+      return c;
+    }
+  }
+  ClosestPoints best = make(s.a, closest_on_segment(t, s.a));
+  keep_min(best, make(s.b, closest_on_segment(t, s.b)));
+  keep_min(best, make(closest_on_segment(s, t.a), t.a));
+  keep_min(best, make(closest_on_segment(s, t.b), t.b));
+  return best;
+}
+
+ClosestPoints segment_arc(const Segment& s, const Arc& a) {
+  // Interior critical point: the connecting line is normal to the segment and radial to the arc,
+  // so it passes through the arc centre.
+  const Vec2 foot = closest_on_segment(s, a.centre);
+  ClosestPoints best = make(foot, closest_on_arc(a, foot));
+  keep_min(best, make(s.a, closest_on_arc(a, s.a)));
+  keep_min(best, make(s.b, closest_on_arc(a, s.b)));
+  keep_min(best, make(closest_on_segment(s, arc_point(a, a.phi0)), arc_point(a, a.phi0)));
+  keep_min(best, make(closest_on_segment(s, arc_point(a, a.phi1)), arc_point(a, a.phi1)));
+  return best;
+}
+
+ClosestPoints arc_arc(const Arc& a, const Arc& b) {
+  const Vec2 c = b.centre - a.centre;
+  const double d = core::norm(c);
+  ClosestPoints best{{}, {}, std::numeric_limits<double>::infinity(), false};
+  if (d > 0.0) {
+    // Interior critical points lie on the line of centres.
+    const Vec2 u = c / d;
+    for (double sa : {1.0, -1.0})
+      for (double sb : {-1.0, 1.0}) {
+        const Vec2 da = sa * u, db = sb * u;
+        if (in_arc(a, da) && in_arc(b, db))
+          keep_min(best, make(a.centre + a.radius * da, b.centre + b.radius * db));
+      }
+  }
+  for (double phi : {a.phi0, a.phi1}) {
+    const Vec2 p = arc_point(a, phi);
+    keep_min(best, make(p, closest_on_arc(b, p)));
+  }
+  for (double phi : {b.phi0, b.phi1}) {
+    const Vec2 q = arc_point(b, phi);
+    keep_min(best, make(closest_on_arc(a, q), q));
+  }
+  return best;
+}
+
+}  // namespace
+
+std::vector<BoundaryPiece> to_world(const std::vector<BoundaryPiece>& body,
+                                    const geometry::Pose& pose) {
+  std::vector<BoundaryPiece> world;
+  world.reserve(body.size());
+  for (const auto& piece : body) {
+    if (const auto* s = std::get_if<Segment>(&piece)) {
+      world.emplace_back(Segment{pose.to_world(s->a), pose.to_world(s->b)});
+    } else {
+      const auto& a = std::get<Arc>(piece);
+      world.emplace_back(
+          Arc{pose.to_world(a.centre), a.radius, a.phi0 + pose.theta, a.phi1 + pose.theta});
+    }
+  }
+  return world;
+}
+
+Vec2 closest_on_segment(const Segment& s, const Vec2& p) {
+  const Vec2 r = s.b - s.a;
+  const double l2 = core::norm2(r);
+  if (l2 == 0.0) return s.a;
+  const double t = std::clamp(core::dot(p - s.a, r) / l2, 0.0, 1.0);
+  return s.a + t * r;
+}
+
+Vec2 closest_on_arc(const Arc& a, const Vec2& p) {
+  const Vec2 d = p - a.centre;
+  const double r = core::norm(d);
+  if (r > 0.0 && in_arc(a, d)) return a.centre + (a.radius / r) * d;
+  const Vec2 p0 = arc_point(a, a.phi0), p1 = arc_point(a, a.phi1);
+  if (r == 0.0) return p0;
+  return core::norm2(p - p0) <= core::norm2(p - p1) ? p0 : p1;
+}
+
+ClosestPoints closest_points(const BoundaryPiece& a, const BoundaryPiece& b) {
+  const auto* sa = std::get_if<Segment>(&a);
+  const auto* sb = std::get_if<Segment>(&b);
+  if (sa && sb) return segment_segment(*sa, *sb);
+  if (sa) return segment_arc(*sa, std::get<Arc>(b));
+  if (sb) return swap_sides(segment_arc(*sb, std::get<Arc>(a)));
+  return arc_arc(std::get<Arc>(a), std::get<Arc>(b));
+}
+
+ClosestPoints closest_points(const std::vector<BoundaryPiece>& a,
+                             const std::vector<BoundaryPiece>& b) {
+  ClosestPoints best{{}, {}, std::numeric_limits<double>::infinity(), false};
+  for (const auto& pa : a)
+    for (const auto& pb : b) keep_min_prefer_face(best, closest_points(pa, pb));
+  return best;
+}
+
+Vec2 support_point(const std::vector<BoundaryPiece>& boundary, const Vec2& d) {
+  Vec2 best;
+  double best_h = -std::numeric_limits<double>::infinity();
+  auto consider = [&](const Vec2& p) {
+    const double h = core::dot(p, d);
+    if (h > best_h) best_h = h, best = p;
+  };
+  for (const auto& piece : boundary) {
+    if (const auto* s = std::get_if<Segment>(&piece)) {
+      consider(s->a);
+      consider(s->b);
+    } else {
+      const auto& a = std::get<Arc>(piece);
+      if (in_arc(a, d)) consider(a.centre + a.radius * d);
+      consider(arc_point(a, a.phi0));
+      consider(arc_point(a, a.phi1));
+    }
+  }
+  return best;
+}
+
+bool is_centred_circle(const std::vector<BoundaryPiece>& boundary, double& radius) {
+  if (boundary.size() != 1) return false;
+  const auto* a = std::get_if<Arc>(&boundary.front());
+  if (!a) return false;
+  const double tol = 1e-12 * std::max(1.0, a->radius);
+  if (core::norm(a->centre) > tol || std::abs(a->phi1 - a->phi0 - two_pi) > 1e-9) return false;
+  radius = a->radius;
+  return true;
+}
+
+}  // namespace picdem::dem

@@ -1,0 +1,50 @@
+#include "picdem/dem/contact_law.hpp"
+
+#include <cmath>
+
+namespace picdem::dem {
+
+ContactCoefficients coefficients(const DemConfig& cfg, double m_ij) {
+  ContactCoefficients k;
+  // eq. 10: k_xi = m_ij ||g|| / (theta dx)
+  k.k_n = m_ij * cfg.g_stiffness / (cfg.theta * cfg.h);
+  // eq. 11: c_xi = 2 alpha sqrt(m_ij k_xi)
+  k.c_n = 2.0 * cfg.alpha * std::sqrt(m_ij * k.k_n);
+  // eq. 12: k_eta = k_xi / (2 (1 + psi))
+  k.k_t = k.k_n / (2.0 * (1.0 + cfg.psi));
+  // eq. 13: c_eta = c_xi / sqrt(2 (1 + psi))
+  k.c_t = k.c_n / std::sqrt(2.0 * (1.0 + cfg.psi));
+  return k;
+}
+
+double dem_time_step(const DemConfig& cfg) {
+  // eq. 18 with eq. 10: dt_DEM = 2 pi / gamma sqrt(m_ij / k_xi) = 2 pi / gamma sqrt(theta dx /
+  // ||g||)
+  return 2.0 * 3.141592653589793 / cfg.gamma * std::sqrt(cfg.theta * cfg.h / cfg.g_stiffness);
+}
+
+ContactForce contact_force(const DemConfig& cfg, const ContactCoefficients& k,
+                           const ContactKinematics& c, const BodyMotion& a, const BodyMotion& b,
+                           double spring, double dt) {
+  const Vec2 n = c.normal, t = core::perp(n);
+  // relative velocity of b with respect to a at the contact point
+  const Vec2 U = b.velocity_at(c.point) - a.velocity_at(c.point);
+  const double U_n = core::dot(U, n), U_t = core::dot(U, t);
+  // eq. 7: F_xi = k_xi delta + c_xi U_xi, U_xi the approach speed -U_n (repulsive when > 0)
+  const double F_n = k.k_n * c.delta - k.c_n * U_n;
+  // eq. 8: F_eta = k_eta (U_eta dt_DEM) + c_eta U_eta; accumulated: the spring holds sum U_eta dt
+  double s = (cfg.tangential == TangentialModel::Accumulated ? spring : 0.0) + U_t * dt;
+  double F_t = k.k_t * s + k.c_t * U_t;
+  // eq. 15: |F_eta| <= mu |F_xi|; the accumulated spring slips to the cap
+  const double cap = cfg.mu * std::abs(F_n);
+  if (std::abs(F_t) > cap) {
+    F_t = std::copysign(cap, F_t);
+    s = F_t / k.k_t;
+  }
+  ContactForce out;
+  out.force = -F_n * n + F_t * t;
+  out.spring = cfg.tangential == TangentialModel::Accumulated ? s : 0.0;
+  return out;
+}
+
+}  // namespace picdem::dem

@@ -1,0 +1,77 @@
+// Closest points between boundary pieces, against hand-computed values.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "picdem/dem/contact_geometry.hpp"
+#include "picdem/geometry/circle.hpp"
+#include "picdem/geometry/polygon.hpp"
+
+using namespace picdem;
+using namespace picdem::dem;
+using geometry::Arc;
+using geometry::Segment;
+
+namespace {
+constexpr double pi = 3.141592653589793;
+}
+
+TEST(ContactGeometry, CircleCircleThroughArcsIsExact) {
+  const geometry::Circle c1(0.3), c2(0.5);
+  const auto a = to_world(c1.boundary(), {{0.0, 0.0}, 0.7});
+  const auto b = to_world(c2.boundary(), {{3.0, 4.0}, -1.1});
+  const ClosestPoints cp = closest_points(a, b);
+  EXPECT_NEAR(cp.distance, 5.0 - 0.8, 1e-14);
+  EXPECT_NEAR(cp.on_a.x, 0.3 * 0.6, 1e-14);
+  EXPECT_NEAR(cp.on_a.z, 0.3 * 0.8, 1e-14);
+  EXPECT_NEAR(cp.on_b.x, 3.0 - 0.5 * 0.6, 1e-14);
+  EXPECT_NEAR(cp.on_b.z, 4.0 - 0.5 * 0.8, 1e-14);
+}
+
+TEST(ContactGeometry, SegmentSegmentCornerToFaceAndCrossing) {
+  const Segment face{{0.0, -1.0}, {0.0, 1.0}};
+  const Segment edge{{0.25, 0.5}, {1.0, 0.9}};
+  const ClosestPoints cp = closest_points(face, edge);
+  EXPECT_NEAR(cp.distance, 0.25, 1e-15);
+  EXPECT_NEAR(cp.on_a.z, 0.5, 1e-15);
+  EXPECT_FALSE(cp.face);
+  const ClosestPoints x = closest_points(face, Segment{{-1.0, 0.2}, {1.0, 0.2}});
+  EXPECT_EQ(x.distance, 0.0);
+  EXPECT_NEAR(x.on_a.z, 0.2, 1e-15);
+}
+
+TEST(ContactGeometry, ParallelFacesMeetAtTheMiddleOfTheirCommonStretch) {
+  const ClosestPoints cp =
+      closest_points(Segment{{0.0, -1.0}, {0.0, 1.0}}, Segment{{0.1, 3.0}, {0.1, 0.5}});
+  EXPECT_TRUE(cp.face);
+  EXPECT_NEAR(cp.distance, 0.1, 1e-15);
+  EXPECT_NEAR(cp.on_a.z, 0.75, 1e-15);  // common stretch z in [0.5, 1]
+  EXPECT_NEAR(cp.on_b.x, 0.1, 1e-15);
+}
+
+TEST(ContactGeometry, SegmentArcInteriorAndEndpoint) {
+  // full circle of radius 1 at the origin, segment the line z = 2 for x in [-1, 3]
+  const Arc full{{0.0, 0.0}, 1.0, 0.0, 2 * pi};
+  const ClosestPoints cp = closest_points(Segment{{-1.0, 2.0}, {3.0, 2.0}}, full);
+  EXPECT_NEAR(cp.distance, 1.0, 1e-15);
+  EXPECT_NEAR(cp.on_b.z, 1.0, 1e-15);
+  // a quarter arc (phi in [-pi/2, 0]) cannot reach the top: its nearest point is the end at (1, 0)
+  const Arc quarter{{0.0, 0.0}, 1.0, -0.5 * pi, 0.0};
+  const ClosestPoints q = closest_points(Segment{{-1.0, 2.0}, {3.0, 2.0}}, quarter);
+  EXPECT_NEAR(q.on_b.x, 1.0, 1e-15);
+  EXPECT_NEAR(q.on_b.z, 0.0, 1e-15);
+  EXPECT_NEAR(q.distance, 2.0, 1e-15);
+}
+
+TEST(ContactGeometry, SupportPointAndCircleDetection) {
+  const geometry::Circle c(0.25);
+  double r = 0.0;
+  EXPECT_TRUE(is_centred_circle(c.boundary(), r));
+  EXPECT_EQ(r, 0.25);
+  const geometry::Polygon sq({{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+  EXPECT_FALSE(is_centred_circle(sq.boundary(), r));
+  const auto w = to_world(sq.boundary(), {{2.0, 2.0}, 0.25 * pi});
+  const core::Vec2 low = support_point(w, {0.0, -1.0});
+  EXPECT_NEAR(low.x, 2.0, 1e-14);
+  EXPECT_NEAR(low.z, 2.0 - std::sqrt(0.5), 1e-14);
+}
