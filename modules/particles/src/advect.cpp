@@ -3,6 +3,7 @@
 #include "picdem/core/timer.hpp"
 #include "picdem/particles/motion.hpp"
 #include "picdem/particles/transfer.hpp"
+#include "stencil.hpp"
 
 namespace picdem::particles {
 
@@ -17,7 +18,14 @@ void advect(ParticleSet& p, const ParticleConfig& config, const grid::FaceField&
   const auto in_tank = [&](core::Vec2 q) {
     return core::Vec2{std::clamp(q.x, x_lo, x_hi), std::clamp(q.z, z_lo, z_hi)};
   };
-  const auto v = [&](core::Vec2 q) { return sample(u, w, s, q); };
+  const detail::Axes ax_u = detail::axes(s, grid::Stagger::FaceX);
+  const detail::Axes ax_w = detail::axes(s, grid::Stagger::FaceZ);
+  const auto v = [&](core::Vec2 q) {
+    const detail::Stencil su = detail::stencil(ax_u, q), sw = detail::stencil(ax_w, q);
+    detail::check_in_storage(u, su, q);
+    detail::check_in_storage(w, sw, q);
+    return core::Vec2{detail::interpolate(u, su), detail::interpolate(w, sw)};
+  };
   const bool rk3 = config.advection == AdvectionScheme::Rk3;
   for (std::size_t n = 0; n < p.size(); ++n) {
     const core::Vec2 x0{p.x[n], p.z[n]};

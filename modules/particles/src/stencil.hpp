@@ -19,18 +19,37 @@ struct Stencil {
   double fx = 0.0, fz = 0.0;
 };
 
-inline Stencil stencil(const grid::GridSpec& spec, grid::Stagger s, core::Vec2 p) {
-  // sample-index coordinates of p: u has its samples at whole x and half z, w the reverse
-  const double sx = (p.x - spec.origin.x) / spec.h - (s == grid::Stagger::FaceZ ? 0.5 : 0.0);
-  const double sz = (p.z - spec.origin.z) / spec.h - (s == grid::Stagger::FaceX ? 0.5 : 0.0);
-  const int ni = spec.nx + (s == grid::Stagger::FaceX ? 1 : 0);  // samples along x
-  const int nk = spec.nz + (s == grid::Stagger::FaceZ ? 1 : 0);  // samples along z
+/// Where the samples of one staggering sit, in a form that costs no division per particle.
+struct Axes {
+  double x0 = 0.0, z0 = 0.0;  ///< position of sample (0, 0), in units of h
+  double inv_h = 1.0;
+  int ni = 0, nk = 0;  ///< samples along x and z
+};
+
+inline Axes axes(const grid::GridSpec& spec, grid::Stagger s) {
+  Axes a;
+  a.inv_h = 1.0 / spec.h;
+  // u has its samples at whole x and half z, w the reverse
+  a.x0 = spec.origin.x * a.inv_h + (s == grid::Stagger::FaceZ ? 0.5 : 0.0);
+  a.z0 = spec.origin.z * a.inv_h + (s == grid::Stagger::FaceX ? 0.5 : 0.0);
+  a.ni = spec.nx + (s == grid::Stagger::FaceX ? 1 : 0);
+  a.nk = spec.nz + (s == grid::Stagger::FaceZ ? 1 : 0);
+  return a;
+}
+
+inline Stencil stencil(const Axes& a, core::Vec2 p) {
+  // sample-index coordinates of p
+  const double sx = p.x * a.inv_h - a.x0, sz = p.z * a.inv_h - a.z0;
   Stencil st;
-  st.i = std::clamp(static_cast<int>(std::floor(sx)), 0, ni - 2);
-  st.k = std::clamp(static_cast<int>(std::floor(sz)), 0, nk - 2);
+  st.i = std::clamp(static_cast<int>(std::floor(sx)), 0, a.ni - 2);
+  st.k = std::clamp(static_cast<int>(std::floor(sz)), 0, a.nk - 2);
   st.fx = sx - st.i;
   st.fz = sz - st.k;
   return st;
+}
+
+inline Stencil stencil(const grid::GridSpec& spec, grid::Stagger s, core::Vec2 p) {
+  return stencil(axes(spec, s), p);
 }
 
 /// Throws when the stencil reaches outside the field's storage (the particle left the halo).

@@ -30,9 +30,10 @@ void scatter(const ParticleSet& p, const grid::GridSpec& s, Stagger st,
   double* m = momentum.data().data();
   double* wt = weight.data().data();
   const double h = s.h;
+  const detail::Axes ax = detail::axes(s, st);
   for (std::size_t n = 0; n < p.size(); ++n) {
     const core::Vec2 pos{p.x[n], p.z[n]};
-    detail::Stencil sten = detail::stencil(s, st, pos);
+    detail::Stencil sten = detail::stencil(ax, pos);
     detail::check_in_storage(momentum, sten, pos);
     // kernel clamped to the grid's faces: its centre x_c is p moved onto the outermost row
     const double fx = std::clamp(sten.fx, 0.0, 1.0), fz = std::clamp(sten.fz, 0.0, 1.0);
@@ -121,11 +122,12 @@ void from_grid(ParticleSet& p, const ParticleConfig& config, const FaceField& u_
                const grid::GridSpec& s) {
   core::ScopedTimer timer("particles: from_grid");
   const double h = s.h;
+  const detail::Axes ax_u = detail::axes(s, Stagger::FaceX), ax_w = detail::axes(s, Stagger::FaceZ);
   if (config.transfer == TransferScheme::Apic) {
     for (std::size_t n = 0; n < p.size(); ++n) {
       const core::Vec2 pos{p.x[n], p.z[n]};
-      const detail::Stencil su = detail::stencil(s, Stagger::FaceX, pos);
-      const detail::Stencil sw = detail::stencil(s, Stagger::FaceZ, pos);
+      const detail::Stencil su = detail::stencil(ax_u, pos);
+      const detail::Stencil sw = detail::stencil(ax_w, pos);
       detail::check_in_storage(u_new, su, pos);
       detail::check_in_storage(w_new, sw, pos);
       // APIC: v_p = u_new(x_p), C_p = grad u_new(x_p)
@@ -137,8 +139,8 @@ void from_grid(ParticleSet& p, const ParticleConfig& config, const FaceField& u_
   const double r = config.flip_ratio;
   for (std::size_t n = 0; n < p.size(); ++n) {
     const core::Vec2 pos{p.x[n], p.z[n]};
-    const detail::Stencil su = detail::stencil(s, Stagger::FaceX, pos);
-    const detail::Stencil sw = detail::stencil(s, Stagger::FaceZ, pos);
+    const detail::Stencil su = detail::stencil(ax_u, pos);
+    const detail::Stencil sw = detail::stencil(ax_w, pos);
     detail::check_in_storage(u_new, su, pos);
     detail::check_in_storage(u_old, su, pos);
     detail::check_in_storage(w_new, sw, pos);
