@@ -94,6 +94,10 @@ void to_grid(const ParticleSet& p, const grid::Decomposition& d, const grid::Hal
 }
 
 void count_per_cell(const ParticleSet& p, const grid::Halo& halo, grid::GridArray<int>& count) {
+  if (p.spec.nx <= 0 || p.spec.nz <= 0 || p.spec.h <= 0.0)
+    throw core::SolverError(
+        "count_per_cell: the particle set has no grid (ParticleSet::spec is unset; seed() sets "
+        "it, a set read from a checkpoint must set it or use the overload taking a GridSpec)");
   count_per_cell(p, p.spec, halo, count);
 }
 

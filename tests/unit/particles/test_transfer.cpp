@@ -10,6 +10,7 @@
 #include <cstdio>
 
 #include "particle_testing.hpp"
+#include "picdem/core/error.hpp"
 #include "picdem/core/rng.hpp"
 #include "picdem/particles/particles.hpp"
 
@@ -229,4 +230,6 @@ TEST(Transfer, GridAndCountsMatchSingleRank) {
     for (int i = o.i0; i < o.i1; ++i) owned_total += count(i, k);
   EXPECT_EQ(comm.sum(mismatches), 0);
   EXPECT_EQ(comm.sum(owned_total), static_cast<long long>(q.size()));
+  ParticleSet bare;  // no grid attached: counting must refuse rather than guess
+  EXPECT_THROW(count_per_cell(bare, halo, count), core::SolverError);
 }
