@@ -615,6 +615,10 @@ CutCells build_cut_cells(const GridWindow& window, const std::vector<SolidPlacem
     for (auto& nb : neighbours) std::sort(nb.begin(), nb.end());
   }
   for (std::size_t j = 0; j < items.size(); ++j) add_item(items[j], items, neighbours[j], bd);
+  std::vector<int> item_of_solid(solids.size(), 0);
+  for (std::size_t j = 0; j < items.size(); ++j) {
+    if (items[j].tag >= 0) item_of_solid[items[j].tag] = static_cast<int>(j);
+  }
 
   // Union of the covered intervals on every line -> open face lengths.
   CutCells cc;
@@ -643,10 +647,10 @@ CutCells build_cut_cells(const GridWindow& window, const std::vector<SolidPlacem
   }
   for (auto& e : cc.ex) e = std::max(0.0, e);
   for (auto& e : cc.ez) e = std::max(0.0, e);
-  cc.fraction.resize(ncell);
-  for (std::size_t c = 0; c < ncell; ++c) cc.fraction[c] = 1.0 - std::min(1.0, bd.covered[c]);
-  cc.body = bd.best_solid;
-  cc.obstacle = bd.best_obstacle;
+  cc.fraction = std::move(bd.covered);
+  for (auto& f : cc.fraction) f = 1.0 - std::min(1.0, f);
+  cc.body = bd.best_solid;  // copied: the tiny-cell rule below still reads the best areas
+  cc.obstacle = std::move(bd.best_obstacle);
   cc.tiny.assign(ncell, 0);
 
   // Tiny cells: fraction below the threshold and still open somewhere -> dropped.
@@ -683,11 +687,8 @@ CutCells build_cut_cells(const GridWindow& window, const std::vector<SolidPlacem
       if (!cc.tiny[c]) continue;
       const bool solid_owner =
           bd.best_solid_area[c] >= bd.best_obstacle_area[c] && bd.best_solid[c] >= 0;
-      const int tag = solid_owner ? bd.best_solid[c] : -1 - bd.best_obstacle[c];
-      const Item* owner = nullptr;
-      for (const auto& it : items) {
-        if (it.tag == tag) owner = &it;
-      }
+      const int tag = solid_owner ? bd.best_solid[c] : -1 - cc.obstacle[c];
+      const Item* owner = tag >= 0 ? &items[item_of_solid[tag]] : nullptr;
       // Faces: (neighbour i, k, vertical?, line index, dropped cell on the low side?)
       struct F {
         int ni, nk;
