@@ -38,30 +38,40 @@ QuietErrors::~QuietErrors() {
   H5Eset_auto2(H5E_DEFAULT, func_, data_);
 }
 
-void write_rows(hid_t file, const std::string& name, hid_t mem_type, const void* data,
-                long long local_rows, long long offset, long long global_rows, int cols) {
-  const int rank = cols > 1 ? 2 : 1;
-  const hsize_t gdims[2] = {static_cast<hsize_t>(global_rows), static_cast<hsize_t>(cols)};
-  Handle fspace(check(H5Screate_simple(rank, gdims, nullptr), "H5Screate_simple " + name),
-                H5Sclose);
+void write_block(hid_t file, const std::string& name, hid_t mem_type, const void* data, int rank,
+                 const hsize_t* dims, const hsize_t* start, const hsize_t* count) {
+  Handle fspace(check(H5Screate_simple(rank, dims, nullptr), "H5Screate_simple " + name), H5Sclose);
   Handle lcpl = intermediate_groups();
   Handle dset(
       check(H5Dcreate2(file, name.c_str(), mem_type, fspace, lcpl, H5P_DEFAULT, H5P_DEFAULT),
             "H5Dcreate2 " + name),
       H5Dclose);
-  const hsize_t start[2] = {static_cast<hsize_t>(offset), 0};
-  const hsize_t count[2] = {static_cast<hsize_t>(local_rows), static_cast<hsize_t>(cols)};
   Handle mspace(check(H5Screate_simple(rank, count, nullptr), "H5Screate_simple mem " + name),
                 H5Sclose);
-  if (local_rows > 0) {
+  hsize_t n = 1;
+  for (int d = 0; d < rank; ++d) n *= count[d];
+  if (n > 0) {
     check_status(H5Sselect_hyperslab(fspace, H5S_SELECT_SET, start, nullptr, count, nullptr),
                  "H5Sselect_hyperslab " + name);
   } else {
     H5Sselect_none(fspace);
     H5Sselect_none(mspace);
   }
+  hsize_t total = 1;
+  for (int d = 0; d < rank; ++d) total *= dims[d];
+  if (total == 0) return;  // an empty dataset has no storage to write to (every rank agrees)
+  static const double dummy = 0.0;
   Handle xfer = collective_transfer();
-  check_status(H5Dwrite(dset, mem_type, mspace, fspace, xfer, data), "H5Dwrite " + name);
+  check_status(H5Dwrite(dset, mem_type, mspace, fspace, xfer, data ? data : &dummy),
+               "H5Dwrite " + name);
+}
+
+void write_rows(hid_t file, const std::string& name, hid_t mem_type, const void* data,
+                long long local_rows, long long offset, long long global_rows, int cols) {
+  const hsize_t dims[2] = {static_cast<hsize_t>(global_rows), static_cast<hsize_t>(cols)};
+  const hsize_t start[2] = {static_cast<hsize_t>(offset), 0};
+  const hsize_t count[2] = {static_cast<hsize_t>(local_rows), static_cast<hsize_t>(cols)};
+  write_block(file, name, mem_type, data, cols > 1 ? 2 : 1, dims, start, count);
 }
 
 }  // namespace picdem::io::h5

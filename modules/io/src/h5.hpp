@@ -67,9 +67,13 @@ class QuietErrors {
   void* data_ = nullptr;
 };
 
-/// Collective write of a 1D (rows x cols, cols >= 1) dataset of doubles or int64 from every
-/// rank's `local_rows` rows starting at global row `offset`; returns nothing; `global_rows` is
-/// the total.
+/// Collective write of a dataset of `dims` (rank 1 or 2) from every rank's block of `count`
+/// elements at `start` (row-major, contiguous in `data`); empty blocks are allowed.
+void write_block(hid_t file, const std::string& name, hid_t mem_type, const void* data, int rank,
+                 const hsize_t* dims, const hsize_t* start, const hsize_t* count);
+
+/// Collective write of a (rows x cols) dataset (1D if cols == 1) from every rank's `local_rows`
+/// rows starting at global row `offset`; `global_rows` is the total.
 void write_rows(hid_t file, const std::string& name, hid_t mem_type, const void* data,
                 long long local_rows, long long offset, long long global_rows, int cols);
 
