@@ -104,6 +104,31 @@ bool is_integer(double v) {
   return v == std::floor(v);
 }
 
+/// The column (kind = kVertical; coordinates x) or row (kHorizontal; coordinates z) of a piece
+/// whose midpoint coordinate is m. `on_line` says a segment keeps that coordinate constant, and
+/// `normal_up` that its outward normal points to larger coordinates in that case.
+int arc_or_segment_index(const Sub& s, const Item& it, double m, bool normal_up, double centre,
+                         double p0, bool on_line, int kind) {
+  if (!s.arc) {
+    // A piece lying on a grid line belongs to the cell its outward normal points into.
+    if (on_line && is_integer(p0))
+      return normal_up ? static_cast<int>(p0) : static_cast<int>(p0) - 1;
+    return floor_int(m);
+  }
+  const double j = std::round(m);
+  if (std::fabs(m - j) > 1e-9) return floor_int(m);
+  // The arc's midpoint is within round-off of line j: decide from the exact configuration.
+  if (s.line0.kind == kind && s.line0 == s.line1 && s.line0.index == j) {
+    // A short arc between two crossings of line j lies beyond the line, away from the centre.
+    return centre < j ? static_cast<int>(j) : static_cast<int>(j) - 1;
+  }
+  if (compare_distance(j, centre, it.rho) >= 0) {
+    // Touching (tangent) or missing the line: the arc is on the centre's side.
+    return centre < j ? static_cast<int>(j) - 1 : static_cast<int>(j);
+  }
+  return floor_int(m);
+}
+
 /// Cell of a boundary piece that crosses no grid line in its interior.
 void assign_cell(Sub& s, const Item& it) {
   const Vec2 d = s.p1 - s.p0;
@@ -115,40 +140,9 @@ void assign_cell(Sub& s, const Item& it) {
     const double am = a0 + 0.5 * s.dphi;
     m = it.c + it.rho * Vec2{std::cos(am), std::sin(am)};
   }
-  // Column.
-  if (!s.arc && d.x == 0.0 && is_integer(s.p0.x)) {
-    // A piece lying on a vertical line belongs to the cell its outward normal points into.
-    s.i = d.z > 0 ? static_cast<int>(s.p0.x) : static_cast<int>(s.p0.x) - 1;
-  } else if (s.arc && s.line0.kind == kVertical && s.line0 == s.line1) {
-    const double j = s.line0.index;
-    const bool away = s.dphi < M_PI;  // minor arc: beyond the line; major: on the centre's side
-    const bool right = (it.c.x < j) == away;
-    s.i = right ? static_cast<int>(j) : static_cast<int>(j) - 1;
-  } else {
-    const double j = std::round(m.x);
-    if (s.arc && std::fabs(m.x - j) < 1e-9) {
-      // Touching a line (tangent) without crossing it: the arc is on the centre's side.
-      s.i = it.c.x < j ? static_cast<int>(j) - 1 : static_cast<int>(j);
-    } else {
-      s.i = floor_int(m.x);
-    }
-  }
-  // Row.
-  if (!s.arc && d.z == 0.0 && is_integer(s.p0.z)) {
-    s.k = d.x < 0 ? static_cast<int>(s.p0.z) : static_cast<int>(s.p0.z) - 1;
-  } else if (s.arc && s.line0.kind == kHorizontal && s.line0 == s.line1) {
-    const double k = s.line0.index;
-    const bool away = s.dphi < M_PI;
-    const bool up = (it.c.z < k) == away;
-    s.k = up ? static_cast<int>(k) : static_cast<int>(k) - 1;
-  } else {
-    const double k = std::round(m.z);
-    if (s.arc && std::fabs(m.z - k) < 1e-9) {
-      s.k = it.c.z < k ? static_cast<int>(k) - 1 : static_cast<int>(k);
-    } else {
-      s.k = floor_int(m.z);
-    }
-  }
+  // Column, then row.
+  s.i = arc_or_segment_index(s, it, m.x, d.z > 0, it.c.x, s.p0.x, d.x == 0.0, kVertical);
+  s.k = arc_or_segment_index(s, it, m.z, d.x < 0, it.c.z, s.p0.z, d.z == 0.0, kHorizontal);
 }
 
 // 1/2 (x dz - z dx) integrated over the piece, relative to the centre of its cell.

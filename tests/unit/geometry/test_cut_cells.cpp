@@ -260,6 +260,24 @@ TEST(CutCellsDegenerate, CircleTangentToHorizontalLines) {
   }
 }
 
+TEST(CutCellsDegenerate, CircleNearlyTangent) {
+  // 2^-40 left of the tangent position: it misses x = 7 by 2^-40 and crosses x = 4 on a chord of
+  // ~3e-6 whose arc bulges ~1e-12 into column 3.
+  const double eps = std::ldexp(1.0, -40);
+  const SolidPlacement s{0, std::make_shared<Circle>(1.5), {{5.5 - eps, 5.3}, 0.0}};
+  const CutCells cc = build_cut_cells(unit_window(12), {s}, {}, keep_all());
+  expect_invariants(cc, s, 3.0 * M_PI, 1e-12);
+  expect_matches_reference(cc, s, 1e-12);
+  for (int k = 0; k < 12; ++k) EXPECT_EQ(cc.E_x(7, k), 1.0);
+  EXPECT_LT(cc.E_x(4, 5), 1.0);
+  EXPECT_GT(cc.E_x(4, 5), 1.0 - 1e-5);
+  bool beyond = false;
+  for (const auto& p : cc.pieces) beyond = beyond || (p.i == 3 && p.k == 5 && p.length > 0);
+  EXPECT_TRUE(beyond);
+  EXPECT_EQ(cc.cutting_body(3, 5), 0);
+  EXPECT_EQ(cc.cutting_body(7, 5), -1);
+}
+
 TEST(CutCellsDegenerate, CircleThroughGridCorners) {
   // radius 5 about (6, 6) passes through the corners (9, 10), (10, 9), (2, 3), ... (3-4-5)
   const SolidPlacement s{0, std::make_shared<Circle>(5.0), {{6.0, 6.0}, 0.0}};
