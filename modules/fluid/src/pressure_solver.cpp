@@ -240,9 +240,18 @@ SolveStats run_solver(const grid::Decomposition& d, const SolverSettings& settin
 
   RCP<const Teuchos::Comm<int>> tcomm = rcp(new Teuchos::MpiComm<int>(comm.raw()));
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
-  std::vector<GO> row_gids(sys.rows.begin(), sys.rows.end());
-  RCP<const Map> row_map = rcp(
-      new Map(invalid, Teuchos::ArrayView<const GO>(row_gids.data(), row_gids.size()), 0, tcomm));
+  // Unknowns are numbered contiguously over ranks (rank offset + local index): Amesos2's coarse
+  // solve was measured to give wrong answers on maps of the non-contiguous cell ids.
+  std::vector<GO> cell_ids(sys.rows.begin(), sys.rows.end());
+  RCP<const Map> cell_map = rcp(
+      new Map(invalid, Teuchos::ArrayView<const GO>(cell_ids.data(), cell_ids.size()), 0, tcomm));
+  RCP<const Map> row_map =
+      rcp(new Map(static_cast<Tpetra::global_size_t>(stats.unknowns), sys.rows.size(), 0, tcomm));
+  const std::vector<double> offsets =
+      comm.all_gather({static_cast<double>(comm.exclusive_scan(n_local))});
+  std::vector<GO> row_gids(sys.rows.size());
+  for (std::size_t r = 0; r < sys.rows.size(); ++r)
+    row_gids[r] = row_map->getGlobalElement(static_cast<LO>(r));
 
   // Column map: the owned rows first (same order), then the other columns by gid.
   grid::GridArray<int> local_of(d, grid::Stagger::Cell, -1);
@@ -264,7 +273,19 @@ SolveStats run_solver(const grid::Decomposition& d, const SolverSettings& settin
   std::sort(remote.begin(), remote.end());
   remote.erase(std::unique(remote.begin(), remote.end()), remote.end());
   std::vector<GO> col_gids = row_gids;
-  col_gids.insert(col_gids.end(), remote.begin(), remote.end());
+  {
+    // Owner and local index of every remote cell id give its contiguous number.
+    Teuchos::Array<int> pids(remote.size());
+    Teuchos::Array<LO> lids(remote.size());
+    cell_map->getRemoteIndexList(Teuchos::ArrayView<const GO>(remote.data(), remote.size()), pids(),
+                                 lids());
+    for (std::size_t n = 0; n < remote.size(); ++n) {
+      if (pids[n] < 0)
+        throw core::SolverError("pressure matrix column of cell " + std::to_string(remote[n]) +
+                                " is not a fluid cell on any rank");
+      col_gids.push_back(static_cast<GO>(offsets[static_cast<std::size_t>(pids[n])]) + lids[n]);
+    }
+  }
   RCP<const Map> col_map = rcp(
       new Map(invalid, Teuchos::ArrayView<const GO>(col_gids.data(), col_gids.size()), 0, tcomm));
 
@@ -307,6 +328,16 @@ SolveStats run_solver(const grid::Decomposition& d, const SolverSettings& settin
   }
 
   Teuchos::ParameterList muelu = settings.muelu;
+  // A system no larger than the coarse size is its own coarsest level, which no repartitioning
+  // gathers onto one rank: there the distributed direct coarse solve is wrong (TOOLCHAIN.md),
+  // so such small systems on several ranks are smoothed by symmetric Gauss-Seidel instead.
+  const int coarse_max = muelu.get<int>("coarse: max size", 2000);
+  if (comm.size() > 1 && stats.unknowns <= coarse_max) {
+    muelu.set("coarse: type", std::string("RELAXATION"));
+    Teuchos::ParameterList& cp = muelu.sublist("coarse: params");
+    cp.set("relaxation: type", std::string("Symmetric Gauss-Seidel"));
+    cp.set("relaxation: sweeps", 2);
+  }
   muelu.sublist("user data").set("Coordinates", coords);
   RCP<OP> prec;
   {

@@ -1,0 +1,128 @@
+// Gravity on faces next to fluid, apertures, divergence of a linear field, velocity extension
+// into air, and the CFL time step, on 1, 2 and 3 ranks.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "picdem/fluid/fluid.hpp"
+
+using namespace picdem;
+using namespace picdem::grid;
+
+namespace {
+
+constexpr signed char kAir = static_cast<signed char>(CellState::Air);
+constexpr signed char kFluid = static_cast<signed char>(CellState::Fluid);
+
+GridSpec make_spec(int nx, int nz, double h) {
+  GridSpec s;
+  s.nx = nx, s.nz = nz, s.h = h;
+  return s;
+}
+
+/// Fluid in the lower `depth` rows, air above.
+fluid::CellStates layer(const Decomposition& d, int depth) {
+  fluid::CellStates c(d, Stagger::Cell, kAir);
+  const auto& b = c.storage();
+  for (int k = b.k0; k < b.k1; ++k)
+    for (int i = b.i0; i < b.i1; ++i)
+      if (i >= 0 && k >= 0 && i < d.spec().nx && k < depth) c(i, k) = kFluid;
+  return c;
+}
+
+}  // namespace
+
+TEST(FluidForces, GravityOnFacesNextToFluidOnly) {
+  const GridSpec s = make_spec(10, 8, 0.05);
+  core::Comm comm;
+  Decomposition d(s, comm, 1);
+  const auto cells = layer(d, 4);
+  FaceField u(d, Stagger::FaceX, 0.0), w(d, Stagger::FaceZ, 0.0);
+  fluid::FluidConfig cfg;
+  cfg.g = {0.5, -9.81};
+  fluid::apply_gravity(u, w, cells, 0.01, cfg);
+  const auto& bw = w.owned();
+  for (int k = bw.k0; k < bw.k1; ++k)
+    for (int i = bw.i0; i < bw.i1; ++i)
+      // Faces k = 0..4 touch a fluid cell (k = 4 is the surface face); above: untouched.
+      EXPECT_DOUBLE_EQ(w(i, k), k <= 4 ? -0.0981 : 0.0) << i << "," << k;
+  const auto& bu = u.owned();
+  for (int k = bu.k0; k < bu.k1; ++k)
+    for (int i = bu.i0; i < bu.i1; ++i) EXPECT_DOUBLE_EQ(u(i, k), k < 4 ? 0.005 : 0.0);
+}
+
+TEST(FluidForces, AperturesClosedOnWallsAndDivergenceOfLinearField) {
+  const GridSpec s = make_spec(9, 7, 0.1);
+  core::Comm comm;
+  Decomposition d(s, comm, 1);
+  const auto E = fluid::open_apertures(d);
+  for (int k = E.E_x.owned().k0; k < E.E_x.owned().k1; ++k)
+    for (int i = E.E_x.owned().i0; i < E.E_x.owned().i1; ++i)
+      EXPECT_EQ(E.E_x(i, k), (i == 0 || i == s.nx) ? 0.0 : 0.1);
+  for (int k = E.E_z.owned().k0; k < E.E_z.owned().k1; ++k)
+    for (int i = E.E_z.owned().i0; i < E.E_z.owned().i1; ++i)
+      EXPECT_EQ(E.E_z(i, k), (k == 0 || k == s.nz) ? 0.0 : 0.1);
+  // u = 2 x, w = -3 z: interior cells have D = E (2 h) + E (-3 h) = -h^2; wall cells lose the
+  // closed faces' fluxes.
+  const auto cells = layer(d, s.nz);
+  FaceField u(d, Stagger::FaceX, 0.0), w(d, Stagger::FaceZ, 0.0);
+  for (int k = u.storage().k0; k < u.storage().k1; ++k)
+    for (int i = u.storage().i0; i < u.storage().i1; ++i)
+      u(i, k) = 2.0 * s.position(Stagger::FaceX, i, k).x;
+  for (int k = w.storage().k0; k < w.storage().k1; ++k)
+    for (int i = w.storage().i0; i < w.storage().i1; ++i)
+      w(i, k) = -3.0 * s.position(Stagger::FaceZ, i, k).z;
+  CellField D(d, Stagger::Cell, 0.0);
+  fluid::divergence(u, w, E, cells, D);
+  for (int k = D.owned().k0; k < D.owned().k1; ++k)
+    for (int i = D.owned().i0; i < D.owned().i1; ++i) {
+      const double h = s.h;
+      double expect = 0.0;
+      expect += (i + 1 < s.nx ? h * 2 * (i + 1) * h : 0.0) - (i > 0 ? h * 2 * i * h : 0.0);
+      expect += (k + 1 < s.nz ? -3 * h * (k + 1) * h : 0.0) - (k > 0 ? -3 * h * k * h : 0.0);
+      EXPECT_NEAR(D(i, k), expect, 1e-14) << i << "," << k;
+    }
+}
+
+TEST(FluidExtension, FillsAirFacesLayerByLayer) {
+  const GridSpec s = make_spec(12, 12, 0.1);
+  core::Comm comm;
+  Decomposition d(s, comm, 1);
+  Halo halo(d);
+  const auto cells = layer(d, 3);  // fluid rows 0..2; w faces 0..3 and u faces in rows 0..2
+  const auto E = fluid::open_apertures(d);
+  GridArray<signed char> uv(d, Stagger::FaceX, 0), wv(d, Stagger::FaceZ, 0);
+  fluid::fluid_faces(cells, E, uv, wv);
+  FaceField u(d, Stagger::FaceX, 0.0), w(d, Stagger::FaceZ, 0.0);
+  for (int k = u.storage().k0; k < u.storage().k1; ++k)
+    for (int i = u.storage().i0; i < u.storage().i1; ++i)
+      if (uv(i, k)) u(i, k) = 1.0 + i;
+  for (int k = w.storage().k0; k < w.storage().k1; ++k)
+    for (int i = w.storage().i0; i < w.storage().i1; ++i)
+      if (wv(i, k)) w(i, k) = 2.0;
+  const int layers = 3;
+  fluid::extend_velocity(u, w, uv, wv, layers, halo);
+  // w: valid faces k <= 3 (k = 0 is the wall, E = 0, so invalid but reached from k = 1).
+  for (int k = w.owned().k0; k < w.owned().k1; ++k)
+    for (int i = w.owned().i0; i < w.owned().i1; ++i) {
+      const bool reached = (k >= 1 && k <= 3 + layers) || k == 0;
+      EXPECT_EQ(w(i, k), reached ? 2.0 : 0.0) << i << "," << k;
+    }
+  // u: interior faces in rows 0..2 valid; rows 3..5 reached; columns keep their value (the
+  // extension goes straight up first, so each column copies its own value).
+  for (int k = u.owned().k0; k < u.owned().k1; ++k)
+    for (int i = u.owned().i0; i < u.owned().i1; ++i) {
+      if (i == 0 || i == s.nx) continue;  // wall faces: reset by enforce_walls afterwards
+      EXPECT_EQ(u(i, k), k <= 2 + layers ? 1.0 + i : 0.0) << i << "," << k;
+    }
+}
+
+TEST(FluidTimeStep, CflOverAllRanks) {
+  const GridSpec s = make_spec(10, 6, 0.02);
+  core::Comm comm;
+  Decomposition d(s, comm, 1);
+  FaceField u(d, Stagger::FaceX, 0.0), w(d, Stagger::FaceZ, 0.0);
+  if (w.owned().contains(9, 6)) w(9, 6) = -4.0;  // the top-right face, owned by the last rank
+  EXPECT_DOUBLE_EQ(fluid::cfl_time_step(u, w, s.h, 0.5, 1.0, comm), 0.5 * 0.02 / 4.0);
+  EXPECT_DOUBLE_EQ(fluid::cfl_time_step(u, w, s.h, 0.5, 1e-3, comm), 1e-3);
+}
