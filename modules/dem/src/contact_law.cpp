@@ -28,7 +28,7 @@ ContactForce contact_force(const DemConfig& cfg, const ContactCoefficients& k,
                            double spring, double dt) {
   const Vec2 n = c.normal, t = core::perp(n);
   // relative velocity of b with respect to a at the contact point
-  const Vec2 U = b.velocity_at(c.point) - a.velocity_at(c.point);
+  const Vec2 U = b.velocity_at(c.arm_b) - a.velocity_at(c.arm_a);
   const double U_n = core::dot(U, n), U_t = core::dot(U, t);
   // eq. 7: F_xi = k_xi delta + c_xi U_xi, U_xi the approach speed -U_n (repulsive when > 0)
   const double F_n = k.k_n * c.delta - k.c_n * U_n;

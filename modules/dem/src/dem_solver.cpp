@@ -19,7 +19,7 @@ using geometry::Segment;
 namespace {
 
 BodyMotion motion_of(const SolidState& s) {
-  return {s.x, s.v, s.omega};
+  return {s.v, s.omega};
 }
 
 geometry::Pose pose_of(const SolidState& s) {
@@ -161,6 +161,9 @@ bool DemSolver::solid_pair(const SolidState& a, const SolidState& b, ContactKine
     const Vec2 on_a = a.x + sa.radius * k.normal, on_b = b.x - sb.radius * k.normal;
     k.point = 0.5 * (on_a + on_b);
     k.delta = delta;
+    // eq. 9: the lever arm is the radius
+    k.arm_a = sa.radius * k.normal;
+    k.arm_b = -sb.radius * k.normal;
     return true;
   }
   const auto wa = to_world(sa.body, pose_of(a)), wb = to_world(sb.body, pose_of(b));
@@ -176,6 +179,8 @@ bool DemSolver::solid_pair(const SolidState& a, const SolidState& b, ContactKine
     return false;
   k.point = 0.5 * (cp.on_a + cp.on_b);
   k.delta = delta;
+  k.arm_a = cp.on_a - a.x;
+  k.arm_b = cp.on_b - b.x;
   return true;
 }
 
@@ -198,6 +203,7 @@ bool DemSolver::wall_pair(const SolidState& a, int side, ContactKinematics& k) c
     k.normal = n;
     k.point = a.x + (sa.radius + 0.5 * dist) * n;
     k.delta = delta;
+    k.arm_a = sa.radius * n;
     return true;
   }
   const auto wa = to_world(sa.body, pose_of(a));
@@ -214,6 +220,7 @@ bool DemSolver::wall_pair(const SolidState& a, int side, ContactKinematics& k) c
   k.normal = n;
   k.point = on_a + 0.5 * dist * n;
   k.delta = delta;
+  k.arm_a = on_a - a.x;
   return true;
 }
 
@@ -238,6 +245,7 @@ bool DemSolver::obstacle_pair(const SolidState& a, std::size_t obstacle,
   }
   k.point = 0.5 * (cp.on_a + cp.on_b);
   k.delta = delta;
+  k.arm_a = cp.on_a - a.x;
   return true;
 }
 
@@ -257,11 +265,11 @@ void DemSolver::collision_forces(double dt_t, Stage& out, std::vector<Springs>* 
     const SolidState& s = owned_[i];
     Vec2 F{};
     double M = 0.0;
-    auto add = [&](const ContactKinematics& kin, const Vec2& f, std::int64_t key, double spring,
-                   std::int64_t other_id, bool report) {
+    auto add = [&](const ContactKinematics& kin, const Vec2& arm, const Vec2& f, std::int64_t key,
+                   double spring, std::int64_t other_id, bool report) {
       F += f;
-      // torque from the contact point: (p - x_i) x F (eq. 9 for circles)
-      M += core::cross(kin.point - s.x, f);
+      // torque arm x F, the arm to the solid's own contact point (eq. 9: F_eta R_i for circles)
+      M += core::cross(arm, f);
       if (new_springs && accumulated) (*new_springs)[i].emplace_back(key, spring);
       if (contacts && report)
         contacts->push_back({s.id, other_id, kin.point, kin.normal, kin.delta});
@@ -273,7 +281,7 @@ void DemSolver::collision_forces(double dt_t, Stage& out, std::vector<Springs>* 
       const auto coef = coefficients(cfg_, s.mass);
       const auto cf = contact_force(cfg_, coef, kin, motion_of(s), fixed,
                                     accumulated ? spring_of(springs_[i], key) : 0.0, dt_t);
-      add(kin, cf.force, key, cf.spring, -1, true);
+      add(kin, kin.arm_a, cf.force, key, cf.spring, -1, true);
     }
     for (std::size_t o = 0; o < obstacles_.size(); ++o) {
       if (!obstacle_pair(s, o, kin)) continue;
@@ -281,7 +289,7 @@ void DemSolver::collision_forces(double dt_t, Stage& out, std::vector<Springs>* 
       const auto coef = coefficients(cfg_, s.mass);
       const auto cf = contact_force(cfg_, coef, kin, motion_of(s), fixed,
                                     accumulated ? spring_of(springs_[i], key) : 0.0, dt_t);
-      add(kin, cf.force, key, cf.spring, -1, true);
+      add(kin, kin.arm_a, cf.force, key, cf.spring, -1, true);
     }
     for (int n = nbr_start_[i]; n < nbr_start_[i + 1]; ++n) {
       const int j = nbr_[static_cast<std::size_t>(n)];
@@ -297,7 +305,8 @@ void DemSolver::collision_forces(double dt_t, Stage& out, std::vector<Springs>* 
       const auto coef = coefficients(cfg_, 0.5 * (a.mass + b.mass));
       const auto cf = contact_force(cfg_, coef, kin, motion_of(a), motion_of(b),
                                     accumulated ? spring_of(springs_[i], p.id) : 0.0, dt_t);
-      add(kin, i_is_a ? cf.force : -cf.force, p.id, cf.spring, p.id, i_is_a);
+      add(kin, i_is_a ? kin.arm_a : kin.arm_b, i_is_a ? cf.force : -cf.force, p.id, cf.spring, p.id,
+          i_is_a);
     }
     out.force[i] = F;
     out.torque[i] = M;

@@ -109,10 +109,12 @@ void DemSolver::exchange() {
   for (std::size_t i = 0; i < owned_.size(); ++i) {
     const int r = owner_of(owned_[i].x);
     if (r == me) {
-      owned_[kept] = owned_[i];
-      springs_[kept] = std::move(springs_[i]);
-      v_start_[kept] = v_start_[i];
-      omega_start_[kept] = omega_start_[i];
+      if (kept != i) {  // (a self-move would empty the springs)
+        owned_[kept] = owned_[i];
+        springs_[kept] = std::move(springs_[i]);
+        v_start_[kept] = v_start_[i];
+        omega_start_[kept] = omega_start_[i];
+      }
       ++kept;
       continue;
     }

@@ -58,9 +58,9 @@ TEST(ContactLaw, CoulombCapAndTangentialDirection) {
   DemConfig c;
   c.h = 1e-3;
   const auto k = coefficients(c, 1.0);
-  ContactKinematics kin{{0.0, 0.0}, {1.0, 0.0}, 1e-5};
+  ContactKinematics kin{{0.0, 0.0}, {1.0, 0.0}, 1e-5, {-0.1, 0.0}, {0.1, 0.0}};
   // b slides fast in +z past a: friction drags a along +z, capped at mu F_n
-  const BodyMotion a{{-0.1, 0.0}, {0.0, 0.0}, 0.0}, b{{0.1, 0.0}, {0.0, 10.0}, 0.0};
+  const BodyMotion a{{0.0, 0.0}, 0.0}, b{{0.0, 10.0}, 0.0};
   const auto f = contact_force(c, k, kin, a, b, 0.0, 1e-4);
   EXPECT_NEAR(f.force.x, -k.k_n * 1e-5, 1e-12);
   EXPECT_NEAR(f.force.z, 0.3 * k.k_n * 1e-5, 1e-12);

@@ -19,17 +19,20 @@ double dem_time_step(const DemConfig& cfg);
 
 /// Rigid-body motion of one side of a contact.
 struct BodyMotion {
-  Vec2 x;            ///< centre of mass
   Vec2 v;            ///< velocity of the centre of mass
   double omega = 0;  ///< angular velocity
-  Vec2 velocity_at(const Vec2& p) const { return v + core::cross(omega, p - x); }
+  /// Velocity of the body point at `arm` from the centre of mass.
+  Vec2 velocity_at(const Vec2& arm) const { return v + core::cross(omega, arm); }
 };
 
-/// Input of one contact evaluation: `point` the contact point, `normal` the unit normal from
-/// body a towards body b, `delta` the overlap of the imaginary boundaries (eq. 19, > 0).
+/// Input of one contact evaluation: `point` the contact point (midpoint of the closest points of
+/// the real boundaries), `normal` the unit normal from body a towards body b, `delta` the overlap
+/// of the imaginary boundaries (eq. 19, > 0), and each body's lever arm: from its centre of mass
+/// to its own closest boundary point (R_i n for a circle, as eq. 9).
 struct ContactKinematics {
   Vec2 point, normal;
   double delta = 0.0;
+  Vec2 arm_a, arm_b;
 };
 
 /// Force on body a (body b receives its negative) and the updated tangential spring.
