@@ -3,7 +3,7 @@
 //
 // A distributed dataset is the concatenation of every rank's local slice in rank order; rank r's
 // offset is the exclusive scan of the slice lengths. Each dataset carries the slice lengths and a
-// CRC-32 per slice, so a file can be read back either slice by slice (same rank count) or by an
+// checksum per slice, so a file can be read back either slice by slice (same rank count) or by an
 // arbitrary global range [begin, end) (any rank count), with the checksums of the slices touched
 // verified. The file is written under `path + ".tmp"` and renamed to `path` only by commit(), after
 // it is complete and closed: a crash leaves the previous checkpoint intact.
