@@ -1,6 +1,6 @@
 #pragma once
 // Slow, independent reference computations for the cut-cell tests: cell by cell and face by
-// face, in long double, with formulas unrelated to the library's line sweep.
+// face, in long double or exact rationals, with formulas unrelated to the library's line sweep.
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -10,9 +10,11 @@
 namespace ref {
 
 using LD = long double;
-struct P {
-  LD x, z;
+template <class T>
+struct PT {
+  T x, z;
 };
+using P = PT<LD>;
 
 /// Area of the disc (centre 0, radius r) inside {X <= x, Z <= z}.
 inline LD disc_quadrant(LD r, LD x, LD z) {
@@ -51,68 +53,75 @@ inline LD disc_vertical_face(LD cx, LD cz, LD r, LD x, LD z0, LD z1) {
   return std::max<LD>(0, std::min(z1, cz + s) - std::max(z0, cz - s));
 }
 
-/// Area of a simple polygon clipped to the rectangle (Sutherland-Hodgman, four half planes).
-inline LD polygon_rect(const std::vector<P>& poly, LD x0, LD x1, LD z0, LD z1) {
-  std::vector<P> cur = poly;
+/// Area of a simple polygon clipped to the rectangle (Sutherland-Hodgman, four half planes), in
+/// the number type T (long double, or CGAL's exact rationals).
+template <class T>
+T polygon_rect(const std::vector<PT<T>>& poly, T x0, T x1, T z0, T z1) {
+  using Pt = PT<T>;
+  std::vector<Pt> cur = poly;
   for (int side = 0; side < 4 && !cur.empty(); ++side) {
-    auto inside = [&](const P& p) {
+    auto inside = [&](const Pt& p) -> bool {
       return side == 0 ? p.x >= x0 : side == 1 ? p.x <= x1 : side == 2 ? p.z >= z0 : p.z <= z1;
     };
-    auto cut = [&](const P& a, const P& b) {
-      LD t;
+    auto cut = [&](const Pt& a, const Pt& b) {
+      T t;
       if (side < 2) {
-        const LD X = side == 0 ? x0 : x1;
+        const T X = side == 0 ? x0 : x1;
         t = (X - a.x) / (b.x - a.x);
-        return P{X, a.z + t * (b.z - a.z)};
+        return Pt{X, a.z + t * (b.z - a.z)};
       }
-      const LD Z = side == 2 ? z0 : z1;
+      const T Z = side == 2 ? z0 : z1;
       t = (Z - a.z) / (b.z - a.z);
-      return P{a.x + t * (b.x - a.x), Z};
+      return Pt{a.x + t * (b.x - a.x), Z};
     };
-    std::vector<P> out;
+    std::vector<Pt> out;
     for (std::size_t j = 0; j < cur.size(); ++j) {
-      const P& a = cur[j];
-      const P& b = cur[(j + 1) % cur.size()];
+      const Pt& a = cur[j];
+      const Pt& b = cur[(j + 1) % cur.size()];
       const bool ia = inside(a), ib = inside(b);
       if (ia) out.push_back(a);
       if (ia != ib) out.push_back(cut(a, b));
     }
     cur.swap(out);
   }
-  LD a2 = 0;
+  T a2 = 0;
   for (std::size_t j = 0; j < cur.size(); ++j) {
-    const P& a = cur[j];
-    const P& b = cur[(j + 1) % cur.size()];
+    const Pt& a = cur[j];
+    const Pt& b = cur[(j + 1) % cur.size()];
     a2 += a.x * b.z - a.z * b.x;
   }
-  return 0.5L * a2;
+  return a2 / T(2);
 }
 
-inline bool polygon_contains(const std::vector<P>& poly, LD x, LD z) {
+template <class T>
+bool polygon_contains(const std::vector<PT<T>>& poly, const T& x, const T& z) {
+  using Pt = PT<T>;
   bool in = false;
   for (std::size_t j = 0, m = poly.size() - 1; j < poly.size(); m = j++) {
-    const P& a = poly[j];
-    const P& b = poly[m];
+    const Pt& a = poly[j];
+    const Pt& b = poly[m];
     if ((a.z > z) != (b.z > z) && x < (b.x - a.x) * (z - a.z) / (b.z - a.z) + a.x) in = !in;
   }
   return in;
 }
 
 /// Covered length of the vertical face (x, z0)-(x, z1) by the polygon (generic position).
-inline LD polygon_vertical_face(const std::vector<P>& poly, LD x, LD z0, LD z1) {
-  std::vector<LD> cuts{z0, z1};
+template <class T>
+T polygon_vertical_face(const std::vector<PT<T>>& poly, T x, T z0, T z1) {
+  using Pt = PT<T>;
+  std::vector<T> cuts{z0, z1};
   for (std::size_t j = 0; j < poly.size(); ++j) {
-    const P& a = poly[j];
-    const P& b = poly[(j + 1) % poly.size()];
+    const Pt& a = poly[j];
+    const Pt& b = poly[(j + 1) % poly.size()];
     if ((a.x > x) != (b.x > x)) {
-      const LD z = a.z + (x - a.x) / (b.x - a.x) * (b.z - a.z);
+      const T z = a.z + (x - a.x) / (b.x - a.x) * (b.z - a.z);
       if (z > z0 && z < z1) cuts.push_back(z);
     }
   }
   std::sort(cuts.begin(), cuts.end());
-  LD len = 0;
+  T len = 0;
   for (std::size_t j = 0; j + 1 < cuts.size(); ++j) {
-    if (polygon_contains(poly, x, 0.5L * (cuts[j] + cuts[j + 1]))) len += cuts[j + 1] - cuts[j];
+    if (polygon_contains(poly, x, T((cuts[j] + cuts[j + 1]) / T(2)))) len += cuts[j + 1] - cuts[j];
   }
   return len;
 }

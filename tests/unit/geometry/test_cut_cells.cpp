@@ -13,6 +13,8 @@
 #include "picdem/geometry/polygon.hpp"
 #include "reference.hpp"
 
+#include <CGAL/Exact_rational.h>
+
 using namespace picdem::geometry;
 using picdem::core::Box2;
 
@@ -84,48 +86,72 @@ ShapePtr random_polygon(std::mt19937_64& rng, double R, int n, bool convex) {
   return std::make_shared<Polygon>(v);
 }
 
-/// Compares every face and cell of `cc` (one solid) with the slow reference.
-void expect_matches_reference(const CutCells& cc, const SolidPlacement& s, double tol) {
+/// Compares every face and cell of `cc` (one solid) with the slow reference: a polygon in exact
+/// rational arithmetic (CGAL::Exact_rational) when `exact`, else in long double; a circle by the
+/// closed-form disc-rectangle integral in long double.
+void expect_matches_reference(const CutCells& cc, const SolidPlacement& s, double tol,
+                              bool exact = false) {
+  using Q = CGAL::Exact_rational;
   const double h = cc.window.h;
   const Vec2 o = cc.window.origin;
   const auto& b = cc.window.cells;
   const auto* circle = dynamic_cast<const Circle*>(s.shape.get());
   std::vector<ref::P> poly, poly_t;  // poly_t: x and z swapped (for horizontal faces)
+  std::vector<ref::PT<Q>> qpoly, qpoly_t;
   if (!circle) {
     for (const auto& v : dynamic_cast<const Polygon&>(*s.shape).vertices()) {
       const Vec2 w = s.pose.to_world(v);
       poly.push_back({w.x, w.z});
       poly_t.push_back({w.z, w.x});
+      qpoly.push_back({Q(w.x), Q(w.z)});
+      qpoly_t.push_back({Q(w.z), Q(w.x)});
     }
   }
+  const bool use_q = exact && !circle;
+  // grid line positions, exactly o + i h
+  auto qx = [&](int i) -> Q { return Q(o.x) + Q(i) * Q(h); };
+  auto qz = [&](int k) -> Q { return Q(o.z) + Q(k) * Q(h); };
+  auto face = [&](bool vertical, int i, int k) -> double {
+    if (use_q) {
+      const Q c = vertical ? ref::polygon_vertical_face(qpoly, qx(i), qz(k), qz(k + 1))
+                           : ref::polygon_vertical_face(qpoly_t, qz(k), qx(i), qx(i + 1));
+      return CGAL::to_double(c);
+    }
+    const ref::LD line = vertical ? o.x + ref::LD(i) * h : o.z + ref::LD(k) * h;
+    const ref::LD a = vertical ? o.z + ref::LD(k) * h : o.x + ref::LD(i) * h;
+    if (circle) {
+      return static_cast<double>(
+          vertical
+              ? ref::disc_vertical_face(s.pose.x.x, s.pose.x.z, circle->radius(), line, a, a + h)
+              : ref::disc_vertical_face(s.pose.x.z, s.pose.x.x, circle->radius(), line, a, a + h));
+    }
+    return static_cast<double>(vertical ? ref::polygon_vertical_face(poly, line, a, a + h)
+                                        : ref::polygon_vertical_face(poly_t, line, a, a + h));
+  };
   for (int k = b.k0; k < b.k1; ++k) {
     for (int i = b.i0; i <= b.i1; ++i) {
-      const ref::LD x = o.x + i * h, z0 = o.z + k * h, z1 = z0 + h;
-      const ref::LD covered =
-          circle ? ref::disc_vertical_face(s.pose.x.x, s.pose.x.z, circle->radius(), x, z0, z1)
-                 : ref::polygon_vertical_face(poly, x, z0, z1);
-      ASSERT_NEAR(cc.E_x(i, k), h - static_cast<double>(covered), tol * h)
-          << "FaceX " << i << " " << k;
+      ASSERT_NEAR(cc.E_x(i, k), h - face(true, i, k), tol * h) << "FaceX " << i << " " << k;
     }
   }
   for (int k = b.k0; k <= b.k1; ++k) {
     for (int i = b.i0; i < b.i1; ++i) {
-      const ref::LD z = o.z + k * h, x0 = o.x + i * h, x1 = x0 + h;
-      const ref::LD covered =
-          circle ? ref::disc_vertical_face(s.pose.x.z, s.pose.x.x, circle->radius(), z, x0, x1)
-                 : ref::polygon_vertical_face(poly_t, z, x0, x1);
-      ASSERT_NEAR(cc.E_z(i, k), h - static_cast<double>(covered), tol * h)
-          << "FaceZ " << i << " " << k;
+      ASSERT_NEAR(cc.E_z(i, k), h - face(false, i, k), tol * h) << "FaceZ " << i << " " << k;
     }
   }
   for (int k = b.k0; k < b.k1; ++k) {
     for (int i = b.i0; i < b.i1; ++i) {
-      const ref::LD x0 = o.x + i * h, z0 = o.z + k * h;
-      const ref::LD a =
-          circle ? ref::disc_rect(s.pose.x.x, s.pose.x.z, circle->radius(), x0, x0 + h, z0, z0 + h)
-                 : ref::polygon_rect(poly, x0, x0 + h, z0, z0 + h);
-      ASSERT_NEAR(1.0 - cc.fluid_fraction(i, k), static_cast<double>(a) / (h * h), tol)
-          << "cell " << i << " " << k;
+      double a;
+      if (use_q) {
+        a = CGAL::to_double(Q(ref::polygon_rect(qpoly, qx(i), qx(i + 1), qz(k), qz(k + 1))) /
+                            (Q(h) * Q(h)));
+      } else {
+        const ref::LD x0 = o.x + ref::LD(i) * h, z0 = o.z + ref::LD(k) * h;
+        a = static_cast<double>((circle ? ref::disc_rect(s.pose.x.x, s.pose.x.z, circle->radius(),
+                                                         x0, x0 + h, z0, z0 + h)
+                                        : ref::polygon_rect(poly, x0, x0 + h, z0, z0 + h)) /
+                                (ref::LD(h) * h));
+      }
+      ASSERT_NEAR(1.0 - cc.fluid_fraction(i, k), a, tol) << "cell " << i << " " << k;
     }
   }
 }
@@ -183,7 +209,7 @@ TEST(CutCells, RandomPolygonsHoldEveryInvariant) {
     const CutCells cc = build_cut_cells(w, {s}, {}, keep_all());
     SCOPED_TRACE("trial " + std::to_string(trial) + " n " + std::to_string(n));
     expect_invariants(cc, s, polygon_perimeter(dynamic_cast<const Polygon&>(*shape)), 1e-12);
-    if (trial % 10 == 0) expect_matches_reference(cc, s, 1e-12);
+    if (trial % 10 == 0) expect_matches_reference(cc, s, 1e-12, /*exact=*/trial % 100 == 0);
     if (HasFailure()) return;
   }
 }
@@ -304,7 +330,7 @@ TEST(CutCellsDegenerate, PolygonVerticesOnGridLinesAndCorners) {
   const SolidPlacement s{0, poly, {poly->centroid_offset(), 0.0}};
   const CutCells cc = build_cut_cells(unit_window(8), {s}, {}, keep_all());
   expect_invariants(cc, s, polygon_perimeter(*poly), 1e-12);
-  expect_matches_reference(cc, s, 1e-12);
+  expect_matches_reference(cc, s, 1e-12, /*exact=*/true);
   // The apex (2, 5) only touches the line x = 2: the face stays open.
   EXPECT_EQ(cc.E_x(2, 4), 1.0);
   EXPECT_EQ(cc.E_x(2, 5), 1.0);
@@ -346,7 +372,7 @@ TEST(CutCellsDegenerate, SquareRotatedOntoGridCorners) {
   const SolidPlacement s{0, poly, {poly->centroid_offset(), 0.0}};
   const CutCells cc = build_cut_cells(unit_window(7), {s}, {}, keep_all());
   expect_invariants(cc, s, 8.0 * std::sqrt(2.0), 1e-12);
-  expect_matches_reference(cc, s, 1e-12);
+  expect_matches_reference(cc, s, 1e-12, /*exact=*/true);
   EXPECT_EQ(cc.fluid_fraction(2, 2), 0.0);
   EXPECT_EQ(cc.fluid_fraction(1, 1), 1.0);
   EXPECT_EQ(cc.fluid_fraction(2, 1), 0.5);
