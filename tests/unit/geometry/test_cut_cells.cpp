@@ -7,6 +7,7 @@
 #include <memory>
 #include <random>
 
+#include "picdem/core/error.hpp"
 #include "picdem/geometry/circle.hpp"
 #include "picdem/geometry/cut_cells.hpp"
 #include "picdem/geometry/outline.hpp"
@@ -468,4 +469,67 @@ TEST(CutCells, OverlappingSolidsGiveTheUnionWithoutNegativeLengths) {
     }
   }
   EXPECT_NEAR(length, union_length, 6 * h);
+}
+
+TEST(CutCellsDegenerate, LatticePlacementsEverywhere) {
+  // Vertices, centres and radii on a lattice of h/4: vertices on grid lines and corners, edges
+  // along grid lines, circles tangent to lines and through corners, all at once.
+  using Q = CGAL::Exact_rational;
+  std::mt19937_64 rng(99);
+  std::uniform_int_distribution<int> q(0, 40);
+  const GridWindow w{{0.0, 0.0}, 1.0, {-2, 14, -2, 14}};
+  int tangent = 0, polygons = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    SolidPlacement s;
+    double perimeter = 0;
+    if (trial % 2 == 0) {
+      const double r = 0.25 * (2 + q(rng) % 14);
+      const Vec2 c{5.0 + 0.25 * (q(rng) % 12), 5.0 + 0.25 * (q(rng) % 12)};
+      s = {0, std::make_shared<Circle>(r), {c, 0.0}};
+      perimeter = 2 * M_PI * r;
+      tangent += std::fmod(c.x + r, 1.0) == 0.0 ? 1 : 0;
+    } else {
+      // a star-shaped polygon about (6, 6) with lattice vertices, kept if valid
+      std::vector<Vec2> v;
+      const int n = 3 + q(rng) % 8;
+      for (int j = 0; j < n; ++j) {
+        const double phi = 2 * M_PI * (j + 0.5) / n;
+        const double r = 1.0 + 0.25 * (q(rng) % 16);
+        v.push_back({6.0 + 0.25 * std::round(4 * r * std::cos(phi)),
+                     6.0 + 0.25 * std::round(4 * r * std::sin(phi))});
+      }
+      std::shared_ptr<Polygon> poly;
+      try {
+        poly = std::make_shared<Polygon>(v);
+      } catch (const picdem::core::InputError&) {
+        continue;
+      }
+      s = {0, poly, {poly->centroid_offset(), 0.0}};
+      perimeter = polygon_perimeter(*poly);
+      ++polygons;
+      // exact covered area per cell
+      std::vector<ref::PT<Q>> qp;
+      for (const auto& p : v) qp.push_back({Q(p.x), Q(p.z)});
+      const CutCells cc = build_cut_cells(w, {s}, {}, keep_all());
+      for (int k = w.cells.k0; k < w.cells.k1; ++k) {
+        for (int i = w.cells.i0; i < w.cells.i1; ++i) {
+          const double a =
+              CGAL::to_double(Q(ref::polygon_rect(qp, Q(i), Q(i + 1), Q(k), Q(k + 1))));
+          ASSERT_NEAR(1.0 - cc.fluid_fraction(i, k), a, 1e-12) << trial << ": " << i << " " << k;
+        }
+      }
+    }
+    const CutCells cc = build_cut_cells(w, {s}, {}, keep_all());
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    expect_invariants(cc, s, perimeter, 1e-12);
+    for (int k = w.cells.k0; k < w.cells.k1; ++k) {
+      for (int i = w.cells.i0; i <= w.cells.i1; ++i) {
+        ASSERT_GE(cc.E_x(i, k), 0.0);
+        ASSERT_LE(cc.E_x(i, k), 1.0);
+      }
+    }
+    if (HasFailure()) return;
+  }
+  EXPECT_GT(tangent, 10);
+  EXPECT_GT(polygons, 200);
 }
