@@ -163,9 +163,16 @@ void FrameWriter::write(double t, long long step,
 
   const std::string h5_rel = frame_path(step).substr(directory_.size() + 1);
   h5::Handle fapl = h5::mpio_access(comm);
-  h5::Handle file(h5::check(H5Fcreate(frame_path(step).c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl),
-                            "cannot create " + frame_path(step)),
-                  H5Fclose);
+  h5::Handle file;
+  {
+    h5::QuietErrors quiet;
+    const hid_t f = H5Fcreate(frame_path(step).c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
+    if (comm.any(f < 0)) {
+      if (f >= 0) H5Fclose(f);
+      throw core::InputError("cannot create frame file '" + frame_path(step) + "'");
+    }
+    file = h5::Handle(f, H5Fclose);
+  }
   std::ostringstream x;
   x << kFrameOpen;
   char stepname[32];

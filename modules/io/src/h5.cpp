@@ -14,6 +14,7 @@ void check_status(herr_t status, const std::string& what) {
 Handle mpio_access(const core::Comm& comm) {
   Handle p(check(H5Pcreate(H5P_FILE_ACCESS), "H5Pcreate(FILE_ACCESS)"), H5Pclose);
   check_status(H5Pset_fapl_mpio(p, comm.raw(), MPI_INFO_NULL), "H5Pset_fapl_mpio");
+  check_status(H5Pset_coll_metadata_write(p, 1), "H5Pset_coll_metadata_write");
   return p;
 }
 

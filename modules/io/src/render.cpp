@@ -62,6 +62,13 @@ void render_snapshot(const core::Comm& comm, const std::string& png_path, const 
     throw core::InputError("render_snapshot: width " + std::to_string(width_pixels) +
                            " pixels outside [64, 16384]");
   const auto speed_it = particles.scalars.find("speed");
+  const bool bad =
+      particles.z.size() != particles.x.size() ||
+      (speed_it != particles.scalars.end() && speed_it->second.size() != particles.x.size());
+  if (comm.any(bad))
+    throw core::InputError(
+        "render_snapshot: particles need as many z and scalars[\"speed\"] values as x values "
+        "on every rank");
   std::vector<double> mine;
   mine.reserve(3 * particles.x.size());
   for (std::size_t n = 0; n < particles.x.size(); ++n)

@@ -194,3 +194,18 @@ TEST(Png, SnapshotGathersEveryRanksParticles) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Png, SnapshotRejectsMismatchedSpeedOnEveryRank) {
+  const picdem::core::Comm comm;
+  picdem::io::PointSet p;
+  p.x = {0.5};
+  p.z = {0.5};
+  if (comm.rank() == comm.size() - 1) p.scalars["speed"] = {1.0, 2.0};  // one rank is wrong
+  EXPECT_THROW(picdem::io::render_snapshot(comm, name("png_bad"), {{0.0, 0.0}, {1.0, 1.0}}, p,
+                                           {}, {}, 200),
+               picdem::core::InputError);
+}
+
+}  // namespace
