@@ -641,6 +641,8 @@ const ParameterList& Params::teuchos(const std::string& path) const {
 std::string Params::full_path(const std::string& path) const { return prefix_ + path; }
 std::string Params::to_yaml() const {
   std::ostringstream s;
+  s.setf(std::ios::showpoint);  // Teuchos asks for it so that 1.0 stays a real
+  s.precision(17);
   Teuchos::writeParameterListToYamlOStream(*list_, s);
   return s.str();
 }

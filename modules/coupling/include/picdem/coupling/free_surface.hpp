@@ -1,0 +1,31 @@
+#pragma once
+// The free surface from the particles, below cell resolution.
+//
+// Occupancy S at cell centres: S(x_c) = sum_p W(x_c - x_p) / (n_ppc m(x_c)), W the bilinear tent
+// of half-width h (the P2G kernel), n_ppc the particles per full cell, m(x_c) the share of the
+// tent's mass inside the tank (1 away from walls). S = 1 in the bulk and crosses 1/2 on the
+// surface: across a flat surface the tent's symmetry puts S = 1/2 exactly on it. phi = 1/2 - S is
+// the level set: negative in the fluid.
+//
+// Used for (1) the ghost-fluid Dirichlet condition p = 0 on the surface (Gibou et al. 2002): a
+// face between fluid cell f and air cell a is cut at theta = phi_f / (phi_f - phi_a) of its
+// length, and (2) the fluid volume: the area where the bilinear interpolant of S exceeds 1/2.
+#include "picdem/core/comm.hpp"
+#include "picdem/grid/field.hpp"
+#include "picdem/particles/particle_set.hpp"
+
+namespace picdem::coupling {
+
+/// S over owned + halo cells (reverse-added, then forwarded).
+void particle_occupancy(const particles::ParticleSet& ps, const grid::Decomposition& d,
+                        const grid::Halo& halo, int particles_per_cell, grid::CellField& S);
+
+/// Surface fraction theta in [theta_min, 1] of the face between fluid cell with occupancy s_f and
+/// air cell with occupancy s_a.
+double surface_theta(double s_f, double s_a, double theta_min);
+
+/// Area where the bilinear interpolant of S between cell centres exceeds 1/2, summed over the
+/// owned cells of every rank (S needs a current halo).
+double occupied_area(const grid::CellField& S, const grid::Decomposition& d, const core::Comm& comm);
+
+}  // namespace picdem::coupling

@@ -1,0 +1,59 @@
+#pragma once
+// What a run leaves for people: timeseries.csv every step; at every output interval a ParaView
+// frame, a PNG picture and the solids' rows of solids.csv; the resolved parameters at the start.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "picdem/core/comm.hpp"
+#include "picdem/core/params.hpp"
+#include "picdem/coupling/simulation.hpp"
+#include "picdem/fluid/fluid.hpp"
+#include "picdem/geometry/cut_cells.hpp"
+#include "picdem/grid/field.hpp"
+#include "picdem/particles/particles.hpp"
+
+namespace picdem::dem {
+class DemSolver;
+}
+namespace picdem::io {
+class FrameWriter;
+class CsvWriter;
+}
+
+namespace picdem::coupling {
+
+class Output {
+ public:
+  Output(core::Comm comm, const core::Params& params, const grid::Decomposition& d,
+         std::string directory);
+  ~Output();
+
+  /// One row of timeseries.csv.
+  void record(const Diagnostics& diag);
+  /// Writes a frame when an output time is reached (or `force`).
+  void frame(double t, long long step, const Diagnostics& diag, const particles::ParticleSet& ps,
+             const grid::CellField& p, const fluid::CellStates& cells, const dem::DemSolver* dem,
+             const std::vector<geometry::Obstacle>& obstacles, bool force);
+  /// Last frame, final.png, timer table; prints where everything is.
+  void finish(double t, long long step, const Diagnostics& diag, const particles::ParticleSet& ps,
+              const grid::CellField& p, const fluid::CellStates& cells, const dem::DemSolver* dem,
+              const std::vector<geometry::Obstacle>& obstacles);
+
+ private:
+  void write_frame(double t, long long step, const particles::ParticleSet& ps,
+                   const grid::CellField& p, const fluid::CellStates& cells,
+                   const dem::DemSolver* dem, const std::vector<geometry::Obstacle>& obstacles,
+                   const std::string& png_name);
+
+  core::Comm comm_;
+  core::Params params_;
+  const grid::Decomposition& decomp_;
+  std::string dir_;
+  double interval_ = 0.0, next_frame_ = 0.0;
+  long long frames_ = 0;
+  std::unique_ptr<io::FrameWriter> frames_writer_;
+  std::unique_ptr<io::CsvWriter> timeseries_, solids_;
+};
+
+}  // namespace picdem::coupling

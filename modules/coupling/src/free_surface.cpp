@@ -1,0 +1,90 @@
+#include "picdem/coupling/free_surface.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace picdem::coupling {
+
+namespace {
+// Mass of the 1D tent of half-width 1 centred at c (in cell units) that lies in [0, n].
+double tent_mass_inside(double c, double n) {
+  auto cdf = [](double t) {  // integral of the tent from -1 to t
+    if (t <= -1) return 0.0;
+    if (t >= 1) return 1.0;
+    return t <= 0 ? 0.5 * (1 + t) * (1 + t) : 1.0 - 0.5 * (1 - t) * (1 - t);
+  };
+  return cdf(n - c) - cdf(0.0 - c);
+}
+}  // namespace
+
+void particle_occupancy(const particles::ParticleSet& ps, const grid::Decomposition& d,
+                        const grid::Halo& halo, int particles_per_cell, grid::CellField& S) {
+  const auto& spec = d.spec();
+  S.fill(0.0);
+  const double inv_h = 1.0 / spec.h;
+  for (std::size_t n = 0; n < ps.x.size(); ++n) {
+    // Cell-centred coordinates: centre of cell i at s = i.
+    const double sx = (ps.x[n] - spec.origin.x) * inv_h - 0.5;
+    const double sz = (ps.z[n] - spec.origin.z) * inv_h - 0.5;
+    const int i0 = static_cast<int>(std::floor(sx)), k0 = static_cast<int>(std::floor(sz));
+    const double fx = sx - i0, fz = sz - k0;
+    // W = (1 - |dx|)(1 - |dz|) on the four surrounding centres
+    const double wx[2] = {1.0 - fx, fx}, wz[2] = {1.0 - fz, fz};
+    for (int b = 0; b < 2; ++b)
+      for (int a = 0; a < 2; ++a)
+        if (S.in_storage(i0 + a, k0 + b)) S(i0 + a, k0 + b) += wx[a] * wz[b];
+  }
+  halo.reverse_add(S);
+  const auto own = d.owned_cells();
+  for (int k = own.k0; k < own.k1; ++k) {
+    const double mz = tent_mass_inside(k + 0.5, spec.nz);
+    for (int i = own.i0; i < own.i1; ++i)
+      S(i, k) /= particles_per_cell * tent_mass_inside(i + 0.5, spec.nx) * mz;
+  }
+  halo.forward(S);
+}
+
+double surface_theta(double s_f, double s_a, double theta_min) {
+  const double phi_f = 0.5 - s_f, phi_a = 0.5 - s_a;
+  if (!(phi_f < 0.0) || !(phi_a > phi_f)) return phi_f < 0.0 ? 1.0 : theta_min;
+  return std::clamp(phi_f / (phi_f - phi_a), theta_min, 1.0);
+}
+
+double occupied_area(const grid::CellField& S, const grid::Decomposition& d, const core::Comm& comm) {
+  const auto& spec = d.spec();
+  const auto own = d.owned_cells();
+  // S at a centre, mirrored across the tank walls.
+  auto at = [&](int i, int k) {
+    i = std::clamp(i, 0, spec.nx - 1);
+    k = std::clamp(k, 0, spec.nz - 1);
+    return S(i, k);
+  };
+  constexpr int sub = 8;  // sub-samples per cell and direction in cells the surface crosses
+  double area_cells = 0.0;
+  for (int k = own.k0; k < own.k1; ++k)
+    for (int i = own.i0; i < own.i1; ++i) {
+      double lo = 1e300, hi = -1e300;
+      for (int b = -1; b <= 1; ++b)
+        for (int a = -1; a <= 1; ++a) lo = std::min(lo, at(i + a, k + b)), hi = std::max(hi, at(i + a, k + b));
+      if (lo > 0.5) {
+        area_cells += 1.0;
+        continue;
+      }
+      if (hi <= 0.5) continue;
+      int inside = 0;
+      for (int q = 0; q < sub; ++q)
+        for (int r = 0; r < sub; ++r) {
+          // point in cell-centred coordinates relative to centre (i, k)
+          const double px = (r + 0.5) / sub - 0.5, pz = (q + 0.5) / sub - 0.5;
+          const int a = px < 0 ? -1 : 0, b = pz < 0 ? -1 : 0;
+          const double fx = px - a, fz = pz - b;
+          const double s = (1 - fx) * (1 - fz) * at(i + a, k + b) + fx * (1 - fz) * at(i + a + 1, k + b) +
+                           (1 - fx) * fz * at(i + a, k + b + 1) + fx * fz * at(i + a + 1, k + b + 1);
+          inside += s > 0.5 ? 1 : 0;
+        }
+      area_cells += static_cast<double>(inside) / (sub * sub);
+    }
+  return comm.sum(area_cells) * spec.h * spec.h;
+}
+
+}  // namespace picdem::coupling

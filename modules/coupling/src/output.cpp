@@ -1,0 +1,127 @@
+#include "picdem/coupling/output.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "picdem/core/log.hpp"
+#include "picdem/core/timer.hpp"
+#include "picdem/dem/dem_solver.hpp"
+#include "picdem/geometry/outline.hpp"
+#include "picdem/io/csv_writer.hpp"
+#include "picdem/io/frame_writer.hpp"
+
+namespace picdem::coupling {
+
+namespace fs = std::filesystem;
+
+Output::Output(core::Comm comm, const core::Params& params, const grid::Decomposition& d,
+               std::string directory)
+    : comm_(comm), params_(params), decomp_(d), dir_(std::move(directory)),
+      interval_(params.real("output/interval")) {
+  if (comm_.is_root()) {
+    fs::create_directories(dir_);
+    fs::create_directories(dir_ + "/pictures");
+    std::ofstream(dir_ + "/case_resolved.yaml") << params_.to_yaml();
+  }
+  comm_.barrier();
+  if (params_.boolean("output/paraview"))
+    frames_writer_ = std::make_unique<io::FrameWriter>(dir_, d);
+  timeseries_ = std::make_unique<io::CsvWriter>(
+      comm_, dir_ + "/timeseries.csv",
+      std::vector<std::string>{"t", "dt", "step", "fluid_volume", "kinetic_energy",
+                               "ppe_iterations", "ppe_residual", "front_x", "particles",
+                               "max_speed"});
+  solids_ = std::make_unique<io::CsvWriter>(
+      comm_, dir_ + "/solids.csv",
+      std::vector<std::string>{"t", "id", "x", "z", "theta", "u", "w", "omega"});
+}
+
+Output::~Output() = default;
+
+void Output::record(const Diagnostics& g) {
+  timeseries_->row({g.t, g.dt, static_cast<double>(g.step), g.fluid_volume, g.kinetic_energy,
+                    static_cast<double>(g.ppe_iterations), g.ppe_residual, g.front_x,
+                    static_cast<double>(g.particles), g.max_speed});
+}
+
+void Output::frame(double t, long long step, const Diagnostics&, const particles::ParticleSet& ps,
+                   const grid::CellField& p, const fluid::CellStates& cells,
+                   const dem::DemSolver* dem, const std::vector<geometry::Obstacle>& obstacles,
+                   bool force) {
+  if (!force && t < next_frame_ - 1e-12 * std::max(1.0, interval_)) return;
+  char name[64];
+  std::snprintf(name, sizeof name, "frame_%06lld.png", frames_);
+  write_frame(t, step, ps, p, cells, dem, obstacles, name);
+  ++frames_;
+  next_frame_ = interval_ * std::floor(t / interval_ + 1e-9) + interval_;
+}
+
+void Output::write_frame(double t, long long step, const particles::ParticleSet& ps,
+                         const grid::CellField& p, const fluid::CellStates& cells,
+                         const dem::DemSolver* dem,
+                         const std::vector<geometry::Obstacle>& obstacles,
+                         const std::string& png_name) {
+  core::ScopedTimer timer("output");
+  const auto& spec = decomp_.spec();
+  io::PointSet points;
+  points.x = ps.x;
+  points.z = ps.z;
+  auto& speed = points.scalars["speed"];
+  speed.resize(ps.x.size());
+  for (std::size_t n = 0; n < ps.x.size(); ++n) speed[n] = std::hypot(ps.u[n], ps.w[n]);
+  points.scalars["u"] = ps.u;
+  points.scalars["w"] = ps.w;
+  auto& ids = points.scalars["id"];
+  ids.assign(ps.id.begin(), ps.id.end());
+
+  io::Polylines solid_lines, obstacle_lines;
+  if (dem) {
+    // Outlines: each rank its owned solids; solids.csv: every solid, by id, from rank 0.
+    for (const auto& st : dem->owned()) {
+      const auto shape = dem->shape_of(st.id);
+      solid_lines.lines.push_back(geometry::outline(*shape, {st.x, st.theta}, 0.5 * spec.h));
+      solid_lines.body_id.push_back(static_cast<double>(st.id));
+    }
+    for (const auto& st : dem->gather_all())
+      solids_->row({t, static_cast<double>(st.id), st.x.x, st.x.z, st.theta, st.v.x, st.v.z,
+                    st.omega});
+  }
+  // Fixed obstacles are known everywhere: rank 0 passes them.
+  for (std::size_t o = 0; comm_.is_root() && o < obstacles.size(); ++o)
+    for (const auto& poly : obstacles[o].polygons) {
+      auto closed = poly;
+      if (!closed.empty()) closed.push_back(closed.front());
+      obstacle_lines.lines.push_back(closed);
+      obstacle_lines.body_id.push_back(static_cast<double>(o));
+    }
+
+  if (frames_writer_) {
+    grid::CellField state(decomp_, grid::Stagger::Cell);
+    const auto b = state.storage();
+    for (int k = b.k0; k < b.k1; ++k)
+      for (int i = b.i0; i < b.i1; ++i) state(i, k) = cells.data().empty() ? 0.0 : cells(i, k);
+    std::map<std::string, const grid::CellField*> fields;
+    if (!p.data().empty()) fields["pressure"] = &p;
+    fields["cell_state"] = &state;
+    frames_writer_->write(t, step, fields, points, solid_lines, obstacle_lines);
+  }
+  if (params_.boolean("output/png")) {
+    const core::Box2 tank{spec.origin, spec.origin + core::Vec2{spec.length(), spec.height()}};
+    io::render_snapshot(comm_, dir_ + "/pictures/" + png_name, tank, points, solid_lines,
+                        obstacle_lines, static_cast<int>(params_.integer("output/png_width")));
+  }
+}
+
+void Output::finish(double t, long long step, const Diagnostics&, const particles::ParticleSet& ps,
+                    const grid::CellField& p, const fluid::CellStates& cells,
+                    const dem::DemSolver* dem, const std::vector<geometry::Obstacle>& obstacles) {
+  write_frame(t, step, ps, p, cells, dem, obstacles, "final.png");
+  std::ostringstream table;
+  core::summarize_timers(comm_, table);
+  if (comm_.is_root()) std::ofstream(dir_ + "/timers.txt") << table.str();
+  core::log(comm_, "output in " + fs::absolute(dir_).string() + ":\n  pictures/final.png (last state), pictures/frame_*.png\n  picdem.xdmf + frames/*.h5 (open picdem.xdmf in ParaView)\n  timeseries.csv, solids.csv, case_resolved.yaml, timers.txt");
+}
+
+}  // namespace picdem::coupling

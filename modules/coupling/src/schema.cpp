@@ -1,0 +1,82 @@
+#include "picdem/coupling/schema.hpp"
+
+#include <sstream>
+
+#include "picdem/dem/parameters.hpp"
+#include "picdem/fluid/fluid.hpp"
+#include "picdem/geometry/obstacles.hpp"
+#include "picdem/grid/grid.hpp"
+#include "picdem/particles/particles.hpp"
+
+namespace picdem::coupling {
+
+void declare_parameters(core::ParamSchema& s) {
+  s.section("case", "What the case is.");
+  s.string("case/name", "unnamed", {}, "short name, used in output file headers");
+
+  s.section("time", "Simulated time and the adaptive time step.");
+  s.real("time/end", 1.0, "simulated time to reach [s]").positive().is_required();
+  s.real("time/cfl", 0.5, "CFL number: dt <= cfl h / max|u| on the grid").positive().at_most(5.0);
+  s.real("time/dt_max", 1e-3, "largest time step [s]").positive();
+  s.real("time/dt_min", 1e-8,
+         "smallest time step [s]; a step below it stops the run as blown up").positive();
+
+  s.section("output", "What the run writes, and how often.");
+  s.real("output/interval", 0.05, "simulated time between frames (ParaView, PNG, solids.csv) [s]")
+      .positive();
+  s.boolean("output/paraview", true, "write XDMF + HDF5 frames");
+  s.boolean("output/png", true, "write a PNG picture with every frame");
+  s.integer("output/png_width", 1000, "width of the PNG pictures [pixels]").at_least(64).at_most(8000);
+  s.real("output/progress_seconds", 5.0, "wall seconds between progress lines").non_negative();
+
+  auto& water = s.family("water", "Where the fluid is at t = 0 (their union; none: a dry run).");
+  auto& box = water.variant("box", "an axis-aligned block of water");
+  box.reals("x", {0.0, 0.1}, "[x_min, x_max] of the block [m]").size(2, 2);
+  box.reals("z", {0.0, 0.1}, "[z_min, z_max] of the block [m]").size(2, 2);
+  auto& level = water.variant("level", "all of the tank below a still-water level");
+  level.real("z", 0.1, "still-water level [m]");
+
+  s.check([](const core::Params& p, std::vector<std::string>& errors) {
+    const auto o = p.reals("grid/origin");
+    const double x0 = o[0], z0 = o[1];
+    const double x1 = x0 + p.real("grid/length"), z1 = z0 + p.real("grid/height");
+    for (const auto& name : p.sublist_names("water")) {
+      const auto w = p.sub("water/" + name);
+      std::ostringstream msg;
+      msg.precision(10);
+      if (w.string("type") == "box") {
+        const auto x = w.reals("x"), z = w.reals("z");
+        if (!(x[0] < x[1]) || !(z[0] < z[1])) {
+          msg << "water/" << name << ": x = [" << x[0] << ", " << x[1] << "], z = [" << z[0]
+              << ", " << z[1] << "] is empty; give [min, max] with min < max";
+          errors.push_back(msg.str());
+        } else if (x[0] < x0 || x[1] > x1 || z[0] < z0 || z[1] > z1) {
+          msg << "water/" << name << ": the block x = [" << x[0] << ", " << x[1] << "], z = ["
+              << z[0] << ", " << z[1] << "] reaches outside the tank x in [" << x0 << ", " << x1
+              << "], z in [" << z0 << ", " << z1 << "]";
+          errors.push_back(msg.str());
+        }
+      } else {
+        const double z = w.real("z");
+        if (z <= z0 || z > z1) {
+          msg << "key 'water/" << name << "/z' = " << z << " is not allowed: the level must lie in ("
+              << z0 << ", " << z1 << "], inside the tank";
+          errors.push_back(msg.str());
+        }
+      }
+    }
+  });
+}
+
+core::ParamSchema case_schema() {
+  core::ParamSchema s;
+  declare_parameters(s);
+  grid::declare_parameters(s);
+  fluid::declare_parameters(s);
+  particles::declare_parameters(s);
+  geometry::declare_obstacle_parameters(s);
+  dem::declare_parameters(s);
+  return s;
+}
+
+}  // namespace picdem::coupling

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Every file in bad_cases/ must stop `picdem --check` with exit code 2 and the message in its
+# .expect file, on the given number of ranks (never a crash or a hang).
+# usage: check_bad_cases.sh PICDEM RANKS MPIEXEC...
+set -u
+picdem=$1 ranks=$2
+shift 2
+dir=$(cd "$(dirname "$0")" && pwd)/bad_cases
+passed=0 failed=0
+check() {  # name, expected text, args...
+  local name=$1 expect=$2
+  shift 2
+  out=$(timeout 120 "$@" 2>&1)
+  code=$?
+  if [ "$code" -ne 2 ]; then
+    echo "FAIL $name: exit code $code, expected 2"; echo "$out" | head -5; failed=$((failed + 1))
+  elif ! grep -qF -- "$expect" <<< "$out"; then
+    echo "FAIL $name: message lacks: $expect"; echo "$out" | head -5; failed=$((failed + 1))
+  else
+    passed=$((passed + 1))
+  fi
+}
+for f in "$dir"/*.yaml; do
+  name=$(basename "$f" .yaml)
+  check "$name" "$(cat "$dir/$name.expect")" "$@" -n "$ranks" "$picdem" --check "$f"
+done
+check missing_file "cannot open the case file" "$@" -n "$ranks" "$picdem" --check "$dir/no_such_file.yaml"
+check bad_override "key 'fluid/density' = -1 is not allowed: must be > 0" \
+  "$@" -n "$ranks" "$picdem" --check "$dir/../good_case.yaml" --set fluid/density=-1
+check unknown_override "unknown key 'grid/cellsize'" \
+  "$@" -n "$ranks" "$picdem" --check "$dir/../good_case.yaml" --set grid/cellsize=0.1
+check unknown_option "unknown option --frobnicate" "$@" -n "$ranks" "$picdem" --frobnicate
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

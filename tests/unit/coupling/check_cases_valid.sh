@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Every shipped case validates, and doc/parameters.md is exactly what the code declares.
+# usage: check_cases_valid.sh PICDEM SOURCE_DIR
+set -u
+picdem=$1 src=$2
+passed=0 failed=0
+for f in "$src"/cases/*/case*.yaml "$src"/tests/unit/coupling/good_case.yaml; do
+  if out=$("$picdem" --check "$f" 2>&1); then passed=$((passed + 1)); else
+    echo "FAIL $f: $out"; failed=$((failed + 1)); fi
+done
+if diff -u "$src/doc/parameters.md" <("$picdem" --help-parameters) > /tmp/picdem_param_diff.$$ 2>&1; then
+  passed=$((passed + 1))
+else
+  echo "FAIL doc/parameters.md differs from 'picdem --help-parameters' (regenerate it):"
+  head -20 /tmp/picdem_param_diff.$$; failed=$((failed + 1))
+fi
+rm -f /tmp/picdem_param_diff.$$
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
