@@ -58,11 +58,21 @@ double cross_at_z(Vec2 a, Vec2 b, double Z) {
 }
 
 /// A body boundary loop in grid units: a polygon (segments) or a full circle.
+/// A boundary piece of a loop mixing segments and arcs, in grid units. a and b are the loop's
+/// joints (shared bitwise with the neighbouring pieces).
+struct UPiece {
+  bool arc = false;
+  Vec2 a, b;
+  Vec2 c;
+  double rho = 0.0, phi0 = 0.0, phi1 = 0.0;
+};
+
 struct Item {
   int tag = 0;  // solid index, or -1-k for obstacle k
   bool circle = false;
-  std::vector<Vec2> verts;  // polygon loop, CCW
-  Vec2 c;                   // circle centre
+  std::vector<UPiece> loop;  // a loop with partial arcs (empty for polygons and circles)
+  std::vector<Vec2> verts;   // polygon loop, CCW
+  Vec2 c;                    // circle centre
   double rho = 0.0;
   Vec2 com;  // centre of mass (solids), grid units
   double lo_x = 0, hi_x = 0, lo_z = 0, hi_z = 0;
@@ -81,6 +91,9 @@ constexpr int kVertical = 1, kHorizontal = 2;
 struct Sub {
   Vec2 p0, p1;
   bool arc = false;
+  Vec2 c;             // arc centre
+  double rho = 0.0;   // arc radius
+  double phi0 = 0.0;  // arc start angle
   double dphi = 0.0;  // arc span
   int i = 0, k = 0;
   Line line0, line1;  // the grid lines the end points lie on (none for original end points)
@@ -107,8 +120,8 @@ bool is_integer(double v) {
 /// The column (kind = kVertical; coordinates x) or row (kHorizontal; coordinates z) of a piece
 /// whose midpoint coordinate is m. `on_line` says a segment keeps that coordinate constant, and
 /// `normal_up` that its outward normal points to larger coordinates in that case.
-int arc_or_segment_index(const Sub& s, const Item& it, double m, bool normal_up, double centre,
-                         double p0, bool on_line, int kind) {
+int arc_or_segment_index(const Sub& s, double m, bool normal_up, double centre, double p0,
+                         bool on_line, int kind) {
   if (!s.arc) {
     // A piece lying on a grid line belongs to the cell its outward normal points into.
     if (on_line && is_integer(p0))
@@ -122,7 +135,7 @@ int arc_or_segment_index(const Sub& s, const Item& it, double m, bool normal_up,
     // A short arc between two crossings of line j lies beyond the line, away from the centre.
     return centre < j ? static_cast<int>(j) : static_cast<int>(j) - 1;
   }
-  if (compare_distance(j, centre, it.rho) >= 0) {
+  if (compare_distance(j, centre, s.rho) >= 0) {
     // Touching (tangent) or missing the line: the arc is on the centre's side.
     return centre < j ? static_cast<int>(j) - 1 : static_cast<int>(j);
   }
@@ -130,23 +143,22 @@ int arc_or_segment_index(const Sub& s, const Item& it, double m, bool normal_up,
 }
 
 /// Cell of a boundary piece that crosses no grid line in its interior.
-void assign_cell(Sub& s, const Item& it) {
+void assign_cell(Sub& s) {
   const Vec2 d = s.p1 - s.p0;
   Vec2 m;
   if (!s.arc) {
     m = 0.5 * (s.p0 + s.p1);
   } else {
-    const double a0 = std::atan2(s.p0.z - it.c.z, s.p0.x - it.c.x);
-    const double am = a0 + 0.5 * s.dphi;
-    m = it.c + it.rho * Vec2{std::cos(am), std::sin(am)};
+    const double am = s.phi0 + 0.5 * s.dphi;
+    m = s.c + s.rho * Vec2{std::cos(am), std::sin(am)};
   }
   // Column, then row.
-  s.i = arc_or_segment_index(s, it, m.x, d.z > 0, it.c.x, s.p0.x, d.x == 0.0, kVertical);
-  s.k = arc_or_segment_index(s, it, m.z, d.x < 0, it.c.z, s.p0.z, d.z == 0.0, kHorizontal);
+  s.i = arc_or_segment_index(s, m.x, d.z > 0, s.c.x, s.p0.x, d.x == 0.0, kVertical);
+  s.k = arc_or_segment_index(s, m.z, d.x < 0, s.c.z, s.p0.z, d.z == 0.0, kHorizontal);
 }
 
 // 1/2 (x dz - z dx) integrated over the piece, relative to the centre of its cell.
-double area_term(const Sub& s, const Item& it) {
+double area_term(const Sub& s) {
   const Vec2 c{s.i + 0.5, s.k + 0.5};
   double a = 0.5 * core::cross(s.p0 - c, s.p1 - c);
   if (s.arc) {
@@ -154,7 +166,7 @@ double area_term(const Sub& s, const Item& it) {
     const double x = s.dphi;
     const double f =
         x < 1e-2 ? x * x * x / 6.0 * (1.0 - x * x / 20.0 * (1.0 - x * x / 42.0)) : x - std::sin(x);
-    a += 0.5 * it.rho * it.rho * f;
+    a += 0.5 * s.rho * s.rho * f;
   }
   return a;
 }
@@ -249,7 +261,7 @@ void split_polygon(const Item& it, Builder& bd) {
       s.p1 = ev[j + 1].p;
       s.line0 = ev[j].line;
       s.line1 = ev[j + 1].line;
-      assign_cell(s, it);
+      assign_cell(s);
       bd.subs.push_back(s);
     }
     // Coverage events on the lines this edge reaches, for the lines shifted by -eps and +eps.
@@ -318,6 +330,8 @@ void split_circle(const Item& it, Builder& bd) {
   if (ev.empty()) {
     Sub s;
     s.arc = true;
+    s.c = c;
+    s.rho = rho;
     s.p0 = s.p1 = c + Vec2{rho, 0.0};
     s.dphi = kTwoPi;
     s.i = floor_int(c.x);
@@ -334,12 +348,15 @@ void split_circle(const Item& it, Builder& bd) {
     if (dphi <= 0.0 || (e0.p == e1.p && dphi < M_PI)) continue;
     Sub s;
     s.arc = true;
+    s.c = c;
+    s.rho = rho;
+    s.phi0 = e0.t;
     s.p0 = e0.p;
     s.p1 = e1.p;
     s.dphi = dphi;
     s.line0 = e0.line;
     s.line1 = e1.line;
-    assign_cell(s, it);
+    assign_cell(s);
     bd.subs.push_back(s);
   }
 }
@@ -399,8 +416,8 @@ void add_item(const Item& it, const std::vector<Item>& items, const std::vector<
       const Vec2 mu = s.arc ? 0.5 * (s.p0 + s.p1) : 0.5 * (s.p0 + s.p1);
       Vec2 m = mu;
       if (s.arc) {
-        const double a0 = std::atan2(s.p0.z - it.c.z, s.p0.x - it.c.x) + 0.5 * s.dphi;
-        m = it.c + it.rho * Vec2{std::cos(a0), std::sin(a0)};
+        const double am = s.phi0 + 0.5 * s.dphi;
+        m = s.c + s.rho * Vec2{std::cos(am), std::sin(am)};
       }
       for (int o : neighbours) {
         const Item& other = items[o];
@@ -413,7 +430,7 @@ void add_item(const Item& it, const std::vector<Item>& items, const std::vector<
     }
     if (hidden) continue;
     const std::size_t c = (s.i - bd.B.i0) + static_cast<std::size_t>(s.k - bd.B.k0) * bnx;
-    bd.term[c] += area_term(s, it);
+    bd.term[c] += area_term(s);
     bd.touched[c] = 1;
     const Vec2 d = s.p1 - s.p0;
     WettedPiece p;
@@ -427,10 +444,10 @@ void add_item(const Item& it, const std::vector<Item>& items, const std::vector<
     if (it.tag >= 0) {
       // (r x n) dl = -d(|r|^2 / 2): -(p1 - p0) . ((p0 + p1) / 2 - X); on an arc about c,
       // -(p1 - p0) . (c - X)
-      const Vec2 lever = s.arc ? it.c - it.com : 0.5 * (s.p0 + s.p1) - it.com;
+      const Vec2 lever = s.arc ? s.c - it.com : 0.5 * (s.p0 + s.p1) - it.com;
       p.r_cross_n_dl = -w.h * w.h * core::dot(d, lever);
     }
-    p.length = w.h * (s.arc ? it.rho * s.dphi : core::norm(d));
+    p.length = w.h * (s.arc ? s.rho * s.dphi : core::norm(d));
     if (!chain.empty() && chain.back().i == p.i && chain.back().k == p.k &&
         chain.back().p1 == p.p0) {
       auto& q = chain.back();
