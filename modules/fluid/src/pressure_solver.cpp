@@ -21,6 +21,7 @@
 
 #include "picdem/core/error.hpp"
 #include "picdem/core/timer.hpp"
+#include "solid_couplings.hpp"
 
 namespace picdem::fluid {
 
@@ -56,49 +57,6 @@ SolverSettings settings_from(const core::Params& params) {
   s.belos = params.teuchos("solver/Belos");
   s.muelu = params.teuchos("solver/MueLu");
   return s;
-}
-
-/// Every solid's coupling joined over ranks (partial lists with the same id are concatenated).
-std::map<std::int64_t, SolidCoupling> gather_couplings(const std::vector<SolidCoupling>& mine,
-                                                       const core::Comm& comm) {
-  // Packed as [id, n, m, I, V*0, V*1, V*2, (cell, a0, a1, a2) x n] per solid.
-  std::vector<double> buf;
-  for (const auto& s : mine) {
-    if (s.cells.size() != s.a.size()) {
-      std::ostringstream m;
-      m << "SolidCoupling of solid " << s.id << " has " << s.cells.size() << " cells but "
-        << s.a.size() << " vectors a; they must match";
-      throw core::InputError(m.str());
-    }
-    buf.insert(buf.end(), {static_cast<double>(s.id), static_cast<double>(s.cells.size()), s.mass,
-                           s.inertia, s.v_star[0], s.v_star[1], s.v_star[2]});
-    for (std::size_t n = 0; n < s.cells.size(); ++n)
-      buf.insert(buf.end(), {static_cast<double>(s.cells[n]), s.a[n][0], s.a[n][1], s.a[n][2]});
-  }
-  const std::vector<double> all = comm.size() > 1 ? comm.all_gather(buf) : buf;
-  std::map<std::int64_t, SolidCoupling> joined;
-  for (std::size_t p = 0; p < all.size();) {
-    const auto id = static_cast<std::int64_t>(all[p]);
-    const auto n = static_cast<std::size_t>(all[p + 1]);
-    SolidCoupling& s = joined[id];
-    s.id = id;
-    s.mass = all[p + 2];
-    s.inertia = all[p + 3];
-    s.v_star = {all[p + 4], all[p + 5], all[p + 6]};
-    p += 7;
-    for (std::size_t c = 0; c < n; ++c, p += 4) {
-      s.cells.push_back(static_cast<long long>(all[p]));
-      s.a.push_back({all[p + 1], all[p + 2], all[p + 3]});
-    }
-  }
-  for (const auto& [id, s] : joined)
-    if (!(s.mass > 0.0) || !(s.inertia > 0.0)) {
-      std::ostringstream m;
-      m << "SolidCoupling of solid " << id << ": mass = " << s.mass << ", inertia = " << s.inertia
-        << "; both must be > 0";
-      throw core::InputError(m.str());
-    }
-  return joined;
 }
 
 }  // namespace
@@ -163,7 +121,7 @@ AssembledSystem PressureSolver::assemble(const CellStates& cells, const Aperture
       sys.rhs[static_cast<std::size_t>(r)] = -D(i, k);
     }
 
-  const auto joined = gather_couplings(couplings, d.comm());
+  const auto joined = detail::gather_couplings(couplings, d.comm());
   if (!joined.empty()) {
     // Which coupling cells are fluid: each owner answers for its cells, summed over ranks.
     std::vector<double> fluid_flag;

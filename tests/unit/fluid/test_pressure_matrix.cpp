@@ -172,3 +172,44 @@ TEST(PressureMatrix, SolidStraddlingRanksByHand) {
     }
   }
 }
+
+// J_s p = -sum_c a_{s,c} p_c over the fluid cells, summed over ranks; the air cell's piece and
+// pieces listed on other ranks are handled like in the assembly. With p = 1000 + cell id:
+//   F_x = -(0.05 * 1011 - 0.05 * 1012) = 0.05,  F_z = -(-0.08 * 1020) = 81.6,
+//   torque = -(0.002 * 1011 - 0.001 * 1012 + 0.003 * 1020) = -4.07
+TEST(PressureLoads, MinusSumOfAPressureByHand) {
+  core::Comm comm;
+  const auto params = fluid_test::tank_params(0.8, 0.4, 0.1);
+  const GridSpec s = spec_from(params);
+  Decomposition d(s, comm, 1);
+  fluid::CellStates cells(d, Stagger::Cell, kAir);
+  CellField p(d, Stagger::Cell, 0.0);
+  const auto& b = cells.storage();
+  for (int k = b.k0; k < b.k1; ++k)
+    for (int i = b.i0; i < b.i1; ++i)
+      if (i >= 0 && i < s.nx && k >= 0 && k < 3) {
+        cells(i, k) = kFluid;
+        p(i, k) = 1000.0 + s.cell_gid(i, k);
+      }
+  fluid::SolidCoupling part;
+  part.id = 3, part.mass = 2.0, part.inertia = 0.01;
+  std::vector<fluid::SolidCoupling> mine;
+  if (comm.rank() == 0) {
+    auto p0 = part;
+    p0.cells = {11, 28};
+    p0.a = {{0.05, 0.0, 0.002}, {0.0, 0.02, 0.0}};
+    mine.push_back(p0);
+  }
+  if (comm.rank() == comm.size() - 1) {
+    auto p1 = part;
+    p1.cells = {12, 20};
+    p1.a = {{-0.05, 0.0, -0.001}, {0.0, -0.08, 0.003}};
+    mine.push_back(p1);
+  }
+  const auto loads = fluid::pressure_loads(mine, p, cells, d);
+  ASSERT_EQ(loads.size(), 1u);
+  EXPECT_EQ(loads[0].id, 3);
+  EXPECT_NEAR(loads[0].force.x, 0.05, 1e-12);
+  EXPECT_NEAR(loads[0].force.z, 81.6, 1e-12);
+  EXPECT_NEAR(loads[0].torque, -4.07, 1e-12);
+}

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "picdem/core/params.hpp"
+#include "picdem/core/solid_state.hpp"
 #include "picdem/fluid/fluid.hpp"
 #include "picdem/grid/field.hpp"
 #include "picdem/grid/grid.hpp"
@@ -73,6 +74,13 @@ class PressureSolver {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+/// The pressure force and torque on every solid, J_s p = -sum_c a_{s,c} p_c (eq. 6), summed over
+/// the fluid cells of all ranks; the same vector (ordered by id) on every rank. Couplings are
+/// passed as to PressureSolver::solve; p is the solved pressure.
+std::vector<core::SolidLoads> pressure_loads(const std::vector<SolidCoupling>& couplings,
+                                             const grid::CellField& p, const CellStates& cells,
+                                             const grid::Decomposition& d);
 
 /// Initialises MPI (if needed), Kokkos and Tpetra for the life of main(); create one before any
 /// PressureSolver::solve (Tpetra::ScopeGuard underneath).
