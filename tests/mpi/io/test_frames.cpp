@@ -394,4 +394,30 @@ TEST(Frames, MismatchedInputIsInputError) {
                picdem::core::InputError);
 }
 
+TEST(Frames, EmptyParticlesAndOutlinesLeaveOnlyTheFluidGrid) {
+  const Comm comm;
+  const grid::Decomposition d(spec(), comm, 1);
+  const std::string dir = dir_for(comm.size()) + "_empty";
+  io::FrameWriter w(dir, d);
+  grid::CellField p(d, grid::Stagger::Cell, 2.5);
+  w.write(1.0, 7, {{"pressure", &p}}, {}, {}, {});
+  comm.barrier();
+  if (!comm.is_root()) return;
+  std::ifstream in(dir + "/picdem.xdmf");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const Element root = XmlParser(ss.str()).parse_document();
+  const auto frames = root.all("Domain")[0]->all("Grid")[0]->all("Grid");
+  ASSERT_EQ(frames.size(), 1u);
+  const auto grids = frames[0]->all("Grid");
+  ASSERT_EQ(grids.size(), 1u);
+  EXPECT_EQ(grids[0]->attr.at("Name"), "fluid");
+  int items = 0;
+  check_data_items(*frames[0], dir, items);
+  EXPECT_EQ(items, 1);
+  std::vector<hsize_t> dims;
+  const auto v = read_h5(dir + "/frames/frame_000007.h5", "/fluid/pressure", &dims);
+  EXPECT_EQ(v, std::vector<double>(kNx * kNz, 2.5));
+}
+
 }  // namespace
