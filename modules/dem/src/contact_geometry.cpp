@@ -30,7 +30,11 @@ Vec2 arc_point(const Arc& a, double phi) {
 }
 
 ClosestPoints make(const Vec2& p, const Vec2& q) {
-  return {p, q, core::norm(q - p), false};
+  ClosestPoints c;
+  c.on_a = p;
+  c.on_b = q;
+  c.distance = core::norm(q - p);
+  return c;
 }
 
 void keep_min(ClosestPoints& best, const ClosestPoints& c) {
@@ -50,7 +54,10 @@ void keep_min_prefer_face(ClosestPoints& best, const ClosestPoints& c) {
 }
 
 ClosestPoints swap_sides(const ClosestPoints& c) {
-  return {c.on_b, c.on_a, c.distance, c.face};
+  ClosestPoints s = c;
+  std::swap(s.on_a, s.on_b);
+  for (int e = 0; e < 2; ++e) std::swap(s.end_a[e], s.end_b[e]);
+  return s;
 }
 
 bool segments_cross(const Segment& s, const Segment& t, Vec2& where) {
@@ -65,17 +72,30 @@ bool segments_cross(const Segment& s, const Segment& t, Vec2& where) {
 
 ClosestPoints segment_segment(const Segment& s, const Segment& t) {
   Vec2 x;
-  if (segments_cross(s, t, x)) return {x, x, 0.0, false};
+  if (segments_cross(s, t, x)) return make(x, x);
   const Vec2 r = s.b - s.a, q = t.b - t.a;
   const double l2 = core::norm2(r);
-  if (l2 > 0.0 && std::abs(core::cross(r, q)) <= 1e-12 * std::sqrt(l2 * core::norm2(q))) {
-    // parallel: the middle of the stretch where they face each other
+  if (l2 > 0.0 && std::abs(core::cross(r, q)) <= 0.0998 * std::sqrt(l2 * core::norm2(q))) {
+    // nearly parallel: the ends of the stretch where they face each other
     const double ua = core::dot(t.a - s.a, r) / l2, ub = core::dot(t.b - s.a, r) / l2;
     const double lo = std::max(0.0, std::min(ua, ub)), hi = std::min(1.0, std::max(ua, ub));
     if (lo <= hi) {
-      const Vec2 p = s.a + 0.5 * (lo + hi) * r;
-      ClosestPoints c = make(p, closest_on_segment(t, p));
+      ClosestPoints c;
       c.face = true;
+      for (int e = 0; e < 2; ++e) {
+        c.end_a[e] = s.a + (e == 0 ? lo : hi) * r;
+        c.end_b[e] = closest_on_segment(t, c.end_a[e]);
+      }
+      const double d0 = core::norm(c.end_b[0] - c.end_a[0]),
+                   d1 = core::norm(c.end_b[1] - c.end_a[1]);
+      const int e = d0 <= d1 ? 0 : 1;
+      c.on_a = c.end_a[e];
+      c.on_b = c.end_b[e];
+      c.distance = std::min(d0, d1);
+      // a corner of t beyond the stretch may come closer than its ends
+      ClosestPoints other = make(closest_on_segment(s, t.a), t.a);
+      keep_min(other, make(closest_on_segment(s, t.b), t.b));
+      if (other.distance < c.distance * (1.0 - 1e-12)) return other;
       return c;
     }
   }
@@ -101,7 +121,8 @@ ClosestPoints segment_arc(const Segment& s, const Arc& a) {
 ClosestPoints arc_arc(const Arc& a, const Arc& b) {
   const Vec2 c = b.centre - a.centre;
   const double d = core::norm(c);
-  ClosestPoints best{{}, {}, std::numeric_limits<double>::infinity(), false};
+  ClosestPoints best;
+  best.distance = std::numeric_limits<double>::infinity();
   if (d > 0.0) {
     // Interior critical points lie on the line of centres.
     const Vec2 u = c / d;
@@ -169,10 +190,25 @@ ClosestPoints closest_points(const BoundaryPiece& a, const BoundaryPiece& b) {
 
 ClosestPoints closest_points(const std::vector<BoundaryPiece>& a,
                              const std::vector<BoundaryPiece>& b) {
-  ClosestPoints best{{}, {}, std::numeric_limits<double>::infinity(), false};
+  ClosestPoints best;
+  best.distance = std::numeric_limits<double>::infinity();
   for (const auto& pa : a)
     for (const auto& pb : b) keep_min_prefer_face(best, closest_points(pa, pb));
   return best;
+}
+
+void face_weighted(const ClosestPoints& cp, double gap, Vec2& on_a, Vec2& on_b) {
+  on_a = cp.on_a;
+  on_b = cp.on_b;
+  if (!cp.face) return;
+  double w[2], sum = 0.0;
+  for (int e = 0; e < 2; ++e) {
+    w[e] = std::max(0.0, gap - core::norm(cp.end_b[e] - cp.end_a[e]));
+    sum += w[e];
+  }
+  if (sum <= 0.0) return;
+  on_a = (w[0] / sum) * cp.end_a[0] + (w[1] / sum) * cp.end_a[1];
+  on_b = (w[0] / sum) * cp.end_b[0] + (w[1] / sum) * cp.end_b[1];
 }
 
 Vec2 support_point(const std::vector<BoundaryPiece>& boundary, const Vec2& d) {

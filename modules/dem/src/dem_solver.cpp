@@ -177,10 +177,12 @@ bool DemSolver::solid_pair(const SolidState& a, const SolidState& b, ContactKine
     k.normal = c / d;
   else
     return false;
-  k.point = 0.5 * (cp.on_a + cp.on_b);
+  Vec2 on_a, on_b;
+  face_weighted(cp, gap, on_a, on_b);
+  k.point = 0.5 * (on_a + on_b);
   k.delta = delta;
-  k.arm_a = cp.on_a - a.x;
-  k.arm_b = cp.on_b - b.x;
+  k.arm_a = on_a - a.x;
+  k.arm_b = on_b - b.x;
   return true;
 }
 
@@ -216,7 +218,8 @@ bool DemSolver::wall_pair(const SolidState& a, int side, ContactKinematics& k) c
   const Vec2 foot = deepest + dist * n;
   const double L = 4.0 * sa.radius + 1.0;
   const ClosestPoints cp = closest_points(wa, {Segment{foot - L * t, foot + L * t}});
-  const Vec2 on_a = cp.face && cp.distance > 0.0 ? cp.on_a : deepest;
+  Vec2 on_a = deepest, on_wall;
+  if (cp.face && cp.distance > 0.0) face_weighted(cp, gap, on_a, on_wall);
   k.normal = n;
   k.point = on_a + 0.5 * dist * n;
   k.delta = delta;
@@ -243,9 +246,11 @@ bool DemSolver::obstacle_pair(const SolidState& a, std::size_t obstacle,
     if (core::norm(r) == 0.0) return false;
     k.normal = r / core::norm(r);
   }
-  k.point = 0.5 * (cp.on_a + cp.on_b);
+  Vec2 on_a, on_b;
+  face_weighted(cp, cfg_.gap(), on_a, on_b);
+  k.point = 0.5 * (on_a + on_b);
   k.delta = delta;
-  k.arm_a = cp.on_a - a.x;
+  k.arm_a = on_a - a.x;
   return true;
 }
 

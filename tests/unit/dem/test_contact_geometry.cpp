@@ -45,8 +45,22 @@ TEST(ContactGeometry, ParallelFacesMeetAtTheMiddleOfTheirCommonStretch) {
       closest_points(Segment{{0.0, -1.0}, {0.0, 1.0}}, Segment{{0.1, 3.0}, {0.1, 0.5}});
   EXPECT_TRUE(cp.face);
   EXPECT_NEAR(cp.distance, 0.1, 1e-15);
-  EXPECT_NEAR(cp.on_a.z, 0.75, 1e-15);  // common stretch z in [0.5, 1]
-  EXPECT_NEAR(cp.on_b.x, 0.1, 1e-15);
+  // common stretch z in [0.5, 1]: its ends, and its middle when both ends overlap equally
+  EXPECT_NEAR(cp.end_a[0].z + cp.end_a[1].z, 1.5, 1e-15);
+  core::Vec2 on_a, on_b;
+  face_weighted(cp, 0.2, on_a, on_b);
+  EXPECT_NEAR(on_a.z, 0.75, 1e-15);
+  EXPECT_NEAR(on_b.x, 0.1, 1e-15);
+  // tilted: the second face is 0.1 away from z = 0.5 and 0.15 / sqrt(1.01) from z = 1; with a
+  // gap of 0.2 the point sits between the ends in proportion to the overlaps
+  const ClosestPoints t =
+      closest_points(Segment{{0.0, -1.0}, {0.0, 1.0}}, Segment{{0.2, 1.5}, {0.1, 0.5}});
+  EXPECT_TRUE(t.face);
+  EXPECT_NEAR(t.distance, 0.1, 1e-15);
+  EXPECT_NEAR(t.on_a.z, 0.5, 1e-15);
+  face_weighted(t, 0.2, on_a, on_b);
+  const double w0 = 0.1, w1 = 0.2 - 0.15 / std::sqrt(1.01);
+  EXPECT_NEAR(on_a.z, 0.5 + 0.5 * w1 / (w0 + w1), 1e-14);
 }
 
 TEST(ContactGeometry, SegmentArcInteriorAndEndpoint) {

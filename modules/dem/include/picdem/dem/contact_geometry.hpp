@@ -17,8 +17,11 @@ using geometry::BoundaryPiece;
 struct ClosestPoints {
   Vec2 on_a, on_b;
   double distance = 0.0;
-  bool face = false;  ///< two parallel segments facing each other: the points are the middle of
-                      ///< their common stretch (so a flat face carries no spurious torque)
+  /// Two nearly parallel segments facing each other (within 0.1 rad): the ends of the stretch
+  /// where they face each other, end_a[e] on the first and end_b[e] on the second. on_a / on_b
+  /// are then the closer of the two ends.
+  bool face = false;
+  Vec2 end_a[2], end_b[2];
 };
 
 /// The boundary pieces moved from the body frame to the world frame.
@@ -35,6 +38,12 @@ ClosestPoints closest_points(const BoundaryPiece& a, const BoundaryPiece& b);
 /// order, so the result is deterministic).
 ClosestPoints closest_points(const std::vector<BoundaryPiece>& a,
                              const std::vector<BoundaryPiece>& b);
+
+/// The contact points on each body for a gap `gap` between imaginary boundaries: for a face
+/// contact, the ends weighted by their overlaps gap - distance (so a face lying flat pushes at
+/// its middle and a tilted one towards its deeper end, continuous with a corner contact); else
+/// the closest points.
+void face_weighted(const ClosestPoints& cp, double gap, Vec2& on_a, Vec2& on_b);
 
 /// The boundary point farthest along the unit direction d (support point of the curve).
 Vec2 support_point(const std::vector<BoundaryPiece>& boundary, const Vec2& d);
