@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
       {"smoother sym. Gauss-Seidel",
        {"solver/MueLu={\"smoother: type\": RELAXATION, \"smoother: params\": "
         "{\"relaxation: type\": \"Symmetric Gauss-Seidel\"}}"}},
+      {"default, rows not rebalanced", {"solver/rebalance=false"}},
       {"chebyshev degree 3", {"solver/MueLu={\"smoother: params\": {\"chebyshev: degree\": 3}}"}},
       {"iterative coarse (no repartition)",
        {"solver/MueLu={\"repartition: enable\": false, \"coarse: type\": RELAXATION, "

@@ -46,6 +46,9 @@ void declare_parameters(core::ParamSchema& schema) {
       .positive()
       .less_than(1.0);
   schema.integer("solver/max_iterations", 500, "CG iterations allowed per solve").at_least(1);
+  schema.boolean("solver/rebalance", true,
+                 "split the pressure unknowns evenly over the ranks for the solve (the grid "
+                 "blocks hold unequal numbers of fluid cells)");
   schema.passthrough("solver/Belos",
                      "\"Implicit Residual Scaling\": \"Norm of RHS\"\n"
                      "Verbosity: 0\n",

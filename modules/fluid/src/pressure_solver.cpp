@@ -10,6 +10,7 @@
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_Core.hpp>
 #include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Import.hpp>
 #include <Tpetra_Map.hpp>
 #include <Tpetra_MultiVector.hpp>
 
@@ -47,6 +48,7 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 struct SolverSettings {
   double tolerance = 1e-8;
   int max_iterations = 500;
+  bool rebalance = true;
   Teuchos::ParameterList belos, muelu;
 };
 
@@ -54,6 +56,7 @@ SolverSettings settings_from(const core::Params& params) {
   SolverSettings s;
   s.tolerance = params.real("solver/tolerance");
   s.max_iterations = static_cast<int>(params.integer("solver/max_iterations"));
+  s.rebalance = params.boolean("solver/rebalance");
   s.belos = params.teuchos("solver/Belos");
   s.muelu = params.teuchos("solver/MueLu");
   return s;
@@ -271,6 +274,7 @@ SolveStats run_solver(const grid::Decomposition& d, const SolverSettings& settin
 
   RCP<MV> X = rcp(new MV(row_map, 1)), B = rcp(new MV(row_map, 1));
   RCP<MV> coords = rcp(new MV(row_map, 2));
+  const RCP<MV> X_grid = X;
   {
     auto xv = X->getDataNonConst(0);
     auto bv = B->getDataNonConst(0);
@@ -283,6 +287,25 @@ SolveStats run_solver(const grid::Decomposition& d, const SolverSettings& settin
                                 static_cast<int>(sys.rows[r] / g.nx));
       cx[r] = c.x, cz[r] = c.z;
     }
+  }
+
+  // The grid's blocks hold unequal numbers of fluid cells (a dam break leaves whole blocks
+  // dry): the rows are moved to an equal split of the same numbering, which keeps each rank's
+  // rows a few contiguous strips of cells.
+  RCP<Tpetra::Import<>> to_balanced;
+  if (settings.rebalance && comm.size() > 1) {
+    RCP<const Map> balanced =
+        rcp(new Map(static_cast<Tpetra::global_size_t>(stats.unknowns), 0, tcomm));
+    to_balanced = rcp(new Tpetra::Import<>(row_map, balanced));
+    A = Tpetra::importAndFillCompleteCrsMatrix<Matrix>(RCP<const Matrix>(A), *to_balanced, balanced,
+                                                       balanced);
+    auto move = [&](RCP<MV>& v) {
+      RCP<MV> moved = rcp(new MV(balanced, v->getNumVectors()));
+      moved->doImport(*v, *to_balanced, Tpetra::INSERT);
+      v = moved;
+    };
+    move(X), move(B), move(coords);
+    row_map = balanced;
   }
 
   Teuchos::ParameterList muelu = settings.muelu;
@@ -333,8 +356,9 @@ SolveStats run_solver(const grid::Decomposition& d, const SolverSettings& settin
     }
   }
   stats.solve_seconds = seconds_since(t1);
+  if (to_balanced) X_grid->doExport(*X, *to_balanced, Tpetra::INSERT);
   {
-    auto xv = X->getData(0);
+    auto xv = X_grid->getData(0);
     for (std::size_t r = 0; r < sys.rows.size(); ++r) x[r] = xv[r];
   }
   if (!(stats.relative_residual <= settings.tolerance)) {
