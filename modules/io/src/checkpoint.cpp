@@ -7,6 +7,7 @@
 
 #include "h5.hpp"
 #include "picdem/core/error.hpp"
+#include "picdem/core/timer.hpp"
 
 namespace picdem::io {
 namespace {
@@ -20,6 +21,7 @@ template <class T>
 hid_t native_type() {
   if constexpr (std::is_same_v<T, double>) return H5T_NATIVE_DOUBLE;
   if constexpr (std::is_same_v<T, std::int64_t>) return H5T_NATIVE_INT64;
+  if constexpr (std::is_same_v<T, long long>) return H5T_NATIVE_LLONG;
   if constexpr (std::is_same_v<T, int>) return H5T_NATIVE_INT;
 }
 
@@ -93,6 +95,7 @@ struct CheckpointWriter::Impl {
 
   template <class T>
   void write(const core::Comm& comm, const std::string& name, const std::vector<T>& local) {
+    core::ScopedTimer timer("io: checkpoint write");
     const auto n = static_cast<long long>(local.size());
     // Slice offset of this rank: exclusive scan of the slice lengths.
     const long long offset = comm.exclusive_scan(n);
@@ -138,6 +141,9 @@ void CheckpointWriter::write(const std::string& name, const std::vector<double>&
 void CheckpointWriter::write(const std::string& name, const std::vector<std::int64_t>& local) {
   impl_->write(comm_, name, local);
 }
+void CheckpointWriter::write(const std::string& name, const std::vector<long long>& local) {
+  impl_->write(comm_, name, local);
+}
 void CheckpointWriter::write(const std::string& name, const std::vector<int>& local) {
   impl_->write(comm_, name, local);
 }
@@ -162,6 +168,7 @@ void CheckpointWriter::attribute(const std::string& name, const std::vector<doub
 }
 
 void CheckpointWriter::commit() {
+  core::ScopedTimer timer("io: checkpoint write");
   const long long complete = 1;
   write_attribute_scalar(impl_->file, kComplete, H5T_NATIVE_LLONG, &complete);
   h5::check_status(H5Fflush(impl_->file, H5F_SCOPE_GLOBAL), "H5Fflush " + temporary_path());
@@ -317,27 +324,48 @@ std::vector<T> read_range_checked(hid_t file, const std::string& path, const std
 
 }  // namespace
 
-#define PICDEM_IO_READERS(T, suffix)                                                             \
-  std::vector<T> CheckpointReader::read_range_##suffix(const std::string& name, long long begin, \
-                                                       long long end) const {                    \
-    if (!has_dataset(name)) throw core::InputError(where(path_, name) + " does not exist");      \
-    return read_range_checked<T>(impl_->file, path_, name, begin, end);                          \
-  }                                                                                              \
-  std::vector<T> CheckpointReader::read_slice_##suffix(const std::string& name) const {          \
-    if (written_ranks_ != comm_.size())                                                          \
-      throw core::InputError("checkpoint file '" + path_ + "' was written on " +                 \
-                             std::to_string(written_ranks_) + " ranks, read on " +               \
-                             std::to_string(comm_.size()) + ": read ranges instead of slices");  \
-    const auto lengths = slice_lengths(name);                                                    \
-    long long b = 0;                                                                             \
-    for (int r = 0; r < comm_.rank(); ++r) b += lengths[static_cast<std::size_t>(r)];            \
-    return read_range_##suffix(name, b, b + lengths[static_cast<std::size_t>(comm_.rank())]);    \
-  }
+template <class T>
+std::vector<T> CheckpointReader::read_range(const std::string& name, long long begin,
+                                            long long end) const {
+  core::ScopedTimer timer("io: checkpoint read");
+  if (!has_dataset(name)) throw core::InputError(where(path_, name) + " does not exist");
+  return read_range_checked<T>(impl_->file, path_, name, begin, end);
+}
 
-PICDEM_IO_READERS(double, double)
-PICDEM_IO_READERS(std::int64_t, int64)
-PICDEM_IO_READERS(int, int)
-#undef PICDEM_IO_READERS
+template <class T>
+std::vector<T> CheckpointReader::read_slice(const std::string& name) const {
+  if (written_ranks_ != comm_.size())
+    throw core::InputError("checkpoint file '" + path_ + "' was written on " +
+                           std::to_string(written_ranks_) + " ranks, read on " +
+                           std::to_string(comm_.size()) + ": read ranges instead of slices");
+  const auto lengths = slice_lengths(name);
+  const auto r = static_cast<std::size_t>(comm_.rank());
+  long long b = 0;
+  for (std::size_t q = 0; q < r; ++q) b += lengths[q];
+  return read_range<T>(name, b, b + lengths[r]);
+}
+
+std::vector<double> CheckpointReader::read_slice_double(const std::string& name) const {
+  return read_slice<double>(name);
+}
+std::vector<std::int64_t> CheckpointReader::read_slice_int64(const std::string& name) const {
+  return read_slice<std::int64_t>(name);
+}
+std::vector<int> CheckpointReader::read_slice_int(const std::string& name) const {
+  return read_slice<int>(name);
+}
+std::vector<double> CheckpointReader::read_range_double(const std::string& name, long long begin,
+                                                        long long end) const {
+  return read_range<double>(name, begin, end);
+}
+std::vector<std::int64_t> CheckpointReader::read_range_int64(const std::string& name,
+                                                             long long begin, long long end) const {
+  return read_range<std::int64_t>(name, begin, end);
+}
+std::vector<int> CheckpointReader::read_range_int(const std::string& name, long long begin,
+                                                  long long end) const {
+  return read_range<int>(name, begin, end);
+}
 
 namespace {
 

@@ -7,6 +7,7 @@
 
 #include "h5.hpp"
 #include "picdem/core/error.hpp"
+#include "picdem/core/timer.hpp"
 
 namespace picdem::io {
 namespace {
@@ -140,6 +141,7 @@ void FrameWriter::write(double t, long long step,
                         const std::map<std::string, const grid::CellField*>& cell_fields,
                         const PointSet& particles, const Polylines& solids,
                         const Polylines& obstacles) {
+  core::ScopedTimer timer("io: frame");
   const core::Comm& comm = decomposition_.comm();
   const grid::GridSpec& spec = decomposition_.spec();
   std::vector<std::string> field_names, scalar_names;

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "picdem/core/error.hpp"
+#include "picdem/core/timer.hpp"
 #include "picdem/io/frame_writer.hpp"
 #include "picdem/io/image.hpp"
 
@@ -55,6 +56,7 @@ std::vector<std::vector<core::Vec2>> unpack(const std::vector<double>& d) {
 void render_snapshot(const core::Comm& comm, const std::string& png_path, const core::Box2& tank,
                      const PointSet& particles, const Polylines& solids, const Polylines& obstacles,
                      int width_pixels) {
+  core::ScopedTimer timer("io: picture");
   const double length = tank.hi.x - tank.lo.x, height = tank.hi.z - tank.lo.z;
   if (!(length > 0.0 && height > 0.0))
     throw core::InputError("render_snapshot: the tank box must have positive length and height");

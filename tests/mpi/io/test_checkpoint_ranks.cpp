@@ -59,6 +59,7 @@ void write_on(const Comm& comm) {
   w.write("particles/x", x);
   w.write("particles/id", id);
   w.write("particles/C", c);
+  w.write("particles/id_ll", std::vector<long long>(id.begin(), id.end()));
   w.write("solids/empty", std::vector<double>(comm.rank() == 1 ? 3 : 0, -1.0));
   w.attribute("case", std::string("dam break ü"));
   w.attribute("step", 123456789012LL);
@@ -87,6 +88,7 @@ TEST(CheckpointRanks, SameRankCountRoundTripIsBitwise) {
   EXPECT_EQ(r.read_slice_double("particles/x"), x);
   EXPECT_EQ(r.read_slice_int64("particles/id"), id);
   EXPECT_EQ(r.read_slice_int("particles/C"), c);
+  EXPECT_EQ(r.read_slice_int64("particles/id_ll"), id);
   EXPECT_EQ(r.length("particles/x"), global_length(comm.size()));
   EXPECT_EQ(r.read_slice_double("solids/empty").size(), comm.rank() == 1 ? 3u : 0u);
   EXPECT_EQ(r.attribute_string("case"), "dam break ü");

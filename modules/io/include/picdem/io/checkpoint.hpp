@@ -29,6 +29,8 @@ class CheckpointWriter {
   /// `name` may contain '/' (groups are created as needed, e.g. "particles/x").
   void write(const std::string& name, const std::vector<double>& local);
   void write(const std::string& name, const std::vector<std::int64_t>& local);
+  /// Stored as 64-bit integers, read back with the *_int64 readers.
+  void write(const std::string& name, const std::vector<long long>& local);
   void write(const std::string& name, const std::vector<int>& local);
 
   /// Collective; every rank must pass the same value. Attributes sit on the file's root group.
@@ -87,6 +89,11 @@ class CheckpointReader {
   const std::string& path() const { return path_; }
 
  private:
+  template <class T>
+  std::vector<T> read_range(const std::string& name, long long begin, long long end) const;
+  template <class T>
+  std::vector<T> read_slice(const std::string& name) const;
+
   struct Impl;
   core::Comm comm_;
   std::string path_;
