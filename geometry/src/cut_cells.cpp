@@ -231,10 +231,9 @@ void distribute(const std::vector<Interval>& v, int c0, int c1, double* c) {
   }
 }
 
-void split_polygon(const Item& it, Builder& bd) {
-  const std::size_t n = it.verts.size();
-  for (std::size_t e = 0; e < n; ++e) {
-    const Vec2 a = it.verts[e], b = it.verts[(e + 1) % n];
+/// Splits the segment a-b at the grid lines and adds its crossings of the shifted lines.
+void split_segment(const Vec2 a, const Vec2 b, Builder& bd) {
+  {
     auto& ev = bd.events;
     ev.clear();
     ev.push_back({0.0, a, {}});
@@ -281,6 +280,130 @@ void split_polygon(const Item& it, Builder& bd) {
         bd.ez_minus[k - bd.B.k0].push_back({cross_at_z(a, b, k), dir_z});
     }
   }
+}
+
+/// Splits an arc at the grid lines and adds its crossings of the lines shifted by +eps and -eps.
+/// A crossing is decided exactly (compare_distance); whether a crossing lies inside the arc's
+/// angle range is checked against the sides of the arc's end points (exact comparisons), which
+/// settles the cases where a crossing and an end point coincide.
+void split_arc(const UPiece& p, Builder& bd) {
+  const double f0 = p.phi0, f1 = p.phi1;
+  const double span = f1 - f0, delta = std::min(span, 1e-3);
+  auto wrap = [f0](double a) {
+    double t = std::fmod(a - f0, kTwoPi);
+    if (t < 0) t += kTwoPi;
+    return f0 + t;
+  };
+  auto gap = [](double a, double b) {
+    const double t = std::fabs(std::fmod(a - b, kTwoPi));
+    return std::min(t, kTwoPi - t);
+  };
+  auto& ev = bd.events;
+  ev.clear();
+  ev.push_back({f0, p.a, {}});
+  struct Root {
+    double ang, along;
+    int dir;
+    bool inside;
+  };
+  for (int axis = 0; axis < 2; ++axis) {
+    const bool vert = axis == 0;
+    const double cc = vert ? p.c.x : p.c.z, ca = vert ? p.c.z : p.c.x;
+    const double a_c = vert ? p.a.x : p.a.z, b_c = vert ? p.b.x : p.b.z;
+    const double a_l = vert ? p.a.z : p.a.x, b_l = vert ? p.b.z : p.b.x;
+    const int lo = vert ? bd.B.i0 : bd.B.k0, hi = vert ? bd.B.i1 : bd.B.k1;
+    auto& plus = vert ? bd.ex_plus : bd.ez_plus;
+    auto& minus = vert ? bd.ex_minus : bd.ez_minus;
+    // Motion across the lines just after the start (start = true) or just before the end: > 0
+    // when the coordinate across the lines grows. The sweep counts +1 for a crossing of a
+    // vertical line towards +xi and of a horizontal line towards -zeta.
+    auto grow = [&](bool start) {
+      const double mid = start ? f0 + 0.5 * delta : f1 - 0.5 * delta;
+      return vert ? -std::sin(mid) : std::cos(mid);
+    };
+    auto dir_of = [vert](double g) { return (g > 0) == vert ? 1 : -1; };
+    for (int j = std::max(lo, floor_int(cc - p.rho)); j <= std::min(hi, floor_int(cc + p.rho) + 1);
+         ++j) {
+      Root r[2];
+      int nr = 0;
+      if (compare_distance(j, cc, p.rho) < 0) {
+        const double d = j - cc;
+        const double s = std::sqrt(std::max(0.0, (p.rho - d) * (p.rho + d)));
+        if (vert) {
+          r[0] = {wrap(std::atan2(-s, d)), ca - s, 1, false};
+          r[1] = {wrap(std::atan2(s, d)), ca + s, -1, false};
+        } else {
+          r[0] = {wrap(std::atan2(d, -s)), ca - s, 1, false};
+          r[1] = {wrap(std::atan2(d, s)), ca + s, -1, false};
+        }
+        nr = 2;
+        for (auto& q : r) {
+          // A crossing at an end point lying exactly on the line is handled by that end point.
+          const bool at_end =
+              (a_c == j && gap(q.ang, f0) < 1e-6) || (b_c == j && gap(q.ang, f1) < 1e-6);
+          q.inside = !at_end && q.ang > f0 && q.ang < f1;
+        }
+      }
+      const Line line{vert ? kVertical : kHorizontal, j};
+      for (int q = 0; q < nr; ++q) {
+        if (!r[q].inside) continue;
+        ev.push_back(
+            {r[q].ang, vert ? Vec2{double(j), r[q].along} : Vec2{r[q].along, double(j)}, line});
+      }
+      for (int e = 0; e < 2; ++e) {
+        // e = 0: the line shifted by +eps (points on it count as below); e = 1: by -eps.
+        const bool sa = e == 0 ? a_c > j : a_c >= j, sb = e == 0 ? b_c > j : b_c >= j;
+        auto& out = (e == 0 ? plus : minus)[j - lo];
+        int crossings = 0;
+        if (a_c == j) {
+          const double g = grow(true);
+          if ((e == 0) == (g > 0)) out.push_back({a_l, dir_of(g)}), ++crossings;
+        }
+        if (b_c == j) {
+          const double g = grow(false);
+          if ((e == 0) == (g < 0)) out.push_back({b_l, dir_of(g)}), ++crossings;
+        }
+        bool inc[2] = {nr > 0 && r[0].inside, nr > 0 && r[1].inside};
+        crossings += (inc[0] ? 1 : 0) + (inc[1] ? 1 : 0);
+        if ((crossings % 2 == 1) != (sa != sb)) {
+          // A crossing within round-off of an end point that is not on the line: trust the end
+          // points' sides (exact) and flip the crossing nearest to an end.
+          int best = -1;
+          double best_gap = 1e-6;
+          for (int q = 0; q < nr; ++q) {
+            const double g = std::min(gap(r[q].ang, f0), gap(r[q].ang, f1));
+            if (g < best_gap) best_gap = g, best = q;
+          }
+          if (best >= 0) inc[best] = !inc[best];
+        }
+        for (int q = 0; q < nr; ++q) {
+          if (inc[q]) out.push_back({r[q].along, r[q].dir});
+        }
+      }
+    }
+  }
+  std::sort(ev.begin() + 1, ev.end(), [](const Event& x, const Event& y) { return x.t < y.t; });
+  ev.push_back({f1, p.b, {}});
+  for (std::size_t j = 0; j + 1 < ev.size(); ++j) {
+    const double dphi = ev[j + 1].t - ev[j].t;
+    if (dphi <= 0.0 || (ev[j].p == ev[j + 1].p && dphi < M_PI)) continue;
+    Sub s;
+    s.arc = true;
+    s.c = p.c;
+    s.rho = p.rho;
+    s.phi0 = ev[j].t;
+    s.dphi = dphi;
+    s.p0 = ev[j].p;
+    s.p1 = ev[j + 1].p;
+    s.line0 = ev[j].line;
+    s.line1 = ev[j + 1].line;
+    assign_cell(s);
+    bd.subs.push_back(s);
+  }
+}
+
+/// Turns the crossings of the shifted lines into covered intervals per line.
+void finish_coverage(Builder& bd) {
   for (int j = bd.B.i0; j <= bd.B.i1; ++j) {
     auto& v = bd.lx[j - bd.B.i0];
     sweep(bd.ex_plus[j - bd.B.i0], v);
@@ -293,6 +416,23 @@ void split_polygon(const Item& it, Builder& bd) {
     sweep(bd.ez_minus[k - bd.B.k0], v);
     merge(v);
   }
+}
+
+void split_polygon(const Item& it, Builder& bd) {
+  const std::size_t n = it.verts.size();
+  for (std::size_t e = 0; e < n; ++e) split_segment(it.verts[e], it.verts[(e + 1) % n], bd);
+  finish_coverage(bd);
+}
+
+void split_loop(const Item& it, Builder& bd) {
+  for (const auto& p : it.loop) {
+    if (p.arc) {
+      split_arc(p, bd);
+    } else {
+      split_segment(p.a, p.b, bd);
+    }
+  }
+  finish_coverage(bd);
 }
 
 void split_circle(const Item& it, Builder& bd) {
@@ -383,6 +523,8 @@ void add_item(const Item& it, const std::vector<Item>& items, const std::vector<
   bd.subs.clear();
   if (it.circle) {
     split_circle(it, bd);
+  } else if (!it.loop.empty()) {
+    split_loop(it, bd);
   } else {
     split_polygon(it, bd);
   }
@@ -548,40 +690,79 @@ CutCells build_cut_cells(const GridWindow& window, const std::vector<SolidPlacem
       continue;
     }
     const Vec2 com = (sp.pose.x - window.origin) / window.h;
-    std::vector<Vec2> verts;
-    bool has_arc = false, has_segment = false;
-    for (const auto& piece : sp.shape->boundary()) {
-      if (const auto* seg = std::get_if<Segment>(&piece)) {
-        verts.push_back(sp.pose.to_world(seg->a));
-        has_segment = true;
-      } else {
-        const auto& a = std::get<Arc>(piece);
-        if (has_arc || !(a.phi1 - a.phi0 >= kTwoPi)) {
-          throw core::InputError("cut cells: solid " + std::to_string(sp.id) + " of kind '" +
-                                 sp.shape->kind() +
-                                 "' has a partial arc; cut cells take polygons and full circles");
-        }
-        has_arc = true;
-        Item it;
-        it.tag = static_cast<int>(s);
-        it.circle = true;
-        it.c = (sp.pose.to_world(a.centre) - window.origin) / window.h;
-        it.rho = a.radius / window.h;
-        it.lo_x = it.c.x - it.rho;
-        it.hi_x = it.c.x + it.rho;
-        it.lo_z = it.c.z - it.rho;
-        it.hi_z = it.c.z + it.rho;
-        it.com = com;
-        items.push_back(it);
-      }
-    }
-    if (has_arc && has_segment) {
+    const std::vector<BoundaryPiece> boundary = sp.shape->boundary();
+    if (boundary.empty()) {
       throw core::InputError("cut cells: solid " + std::to_string(sp.id) + " of kind '" +
-                             sp.shape->kind() + "' mixes arcs and segments; not supported");
+                             sp.shape->kind() + "' has an empty boundary");
     }
-    if (has_segment) {
+    auto to_unit = [&](const Vec2& body) {
+      return (sp.pose.to_world(body) - window.origin) / window.h;
+    };
+    const auto* first_arc = std::get_if<Arc>(&boundary[0]);
+    bool all_segments = true;
+    for (const auto& piece : boundary)
+      all_segments = all_segments && std::holds_alternative<Segment>(piece);
+    if (boundary.size() == 1 && first_arc && first_arc->phi1 - first_arc->phi0 >= kTwoPi) {
+      // A full circle.
+      Item it;
+      it.tag = static_cast<int>(s);
+      it.circle = true;
+      it.c = to_unit(first_arc->centre);
+      it.rho = first_arc->radius / window.h;
+      it.lo_x = it.c.x - it.rho;
+      it.hi_x = it.c.x + it.rho;
+      it.lo_z = it.c.z - it.rho;
+      it.hi_z = it.c.z + it.rho;
+      it.com = com;
+      items.push_back(it);
+    } else if (all_segments) {
+      std::vector<Vec2> verts;
+      for (const auto& piece : boundary)
+        verts.push_back(sp.pose.to_world(std::get<Segment>(piece).a));
       Item it = make_polygon_item(static_cast<int>(s), verts, window);
       it.com = com;
+      items.push_back(std::move(it));
+    } else {
+      // Segments and arcs: joints shared bitwise between neighbouring pieces.
+      Item it;
+      it.tag = static_cast<int>(s);
+      it.com = com;
+      const std::size_t n = boundary.size();
+      it.loop.resize(n);
+      for (std::size_t j = 0; j < n; ++j) {
+        UPiece& u = it.loop[j];
+        if (const auto* seg = std::get_if<Segment>(&boundary[j])) {
+          u.a = to_unit(seg->a);
+        } else {
+          const auto& arc = std::get<Arc>(boundary[j]);
+          if (!(arc.radius > 0.0) || !(arc.phi1 > arc.phi0) || arc.phi1 - arc.phi0 > kTwoPi) {
+            throw core::InputError("cut cells: solid " + std::to_string(sp.id) + " of kind '" +
+                                   sp.shape->kind() +
+                                   "' has an arc with radius <= 0 or a span outside (0, 2 pi]");
+          }
+          u.arc = true;
+          u.c = to_unit(arc.centre);
+          u.rho = arc.radius / window.h;
+          u.phi0 = arc.phi0 + sp.pose.theta;
+          u.phi1 = arc.phi1 + sp.pose.theta;
+          const auto* prev = std::get_if<Segment>(&boundary[(j + n - 1) % n]);
+          u.a = prev ? to_unit(prev->b) : u.c + u.rho * Vec2{std::cos(u.phi0), std::sin(u.phi0)};
+        }
+      }
+      it.lo_x = it.lo_z = INFINITY;
+      it.hi_x = it.hi_z = -INFINITY;
+      for (std::size_t j = 0; j < n; ++j) {
+        UPiece& u = it.loop[j];
+        u.b = it.loop[(j + 1) % n].a;
+        const Vec2 lo =
+            u.arc ? u.c - Vec2{u.rho, u.rho} : Vec2{std::min(u.a.x, u.b.x), std::min(u.a.z, u.b.z)};
+        const Vec2 hi =
+            u.arc ? u.c + Vec2{u.rho, u.rho} : Vec2{std::max(u.a.x, u.b.x), std::max(u.a.z, u.b.z)};
+        it.lo_x = std::min(it.lo_x, lo.x);
+        it.lo_z = std::min(it.lo_z, lo.z);
+        it.hi_x = std::max(it.hi_x, hi.x);
+        it.hi_z = std::max(it.hi_z, hi.z);
+      }
       items.push_back(std::move(it));
     }
     const ShapePtr shape = sp.shape;
