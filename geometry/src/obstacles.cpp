@@ -143,6 +143,15 @@ std::vector<std::vector<Vec2>> fall_pipe_polygons(const FallPipe& p, const std::
   return out;
 }
 
+std::vector<std::vector<Vec2>> outlines(const Obstacle& obstacle) {
+  std::vector<std::vector<Vec2>> out;
+  for (const auto& poly : obstacle.polygons) {
+    out.push_back(poly);
+    if (!poly.empty()) out.back().push_back(poly.front());
+  }
+  return out;
+}
+
 std::vector<Obstacle> obstacles_from(const core::Params& params) {
   std::vector<Obstacle> out;
   if (!params.has("obstacles")) return out;

@@ -83,6 +83,10 @@ TEST(Obstacles, VariantsBuildTheExpectedPolygons) {
   EXPECT_NEAR(area(obs[1].polygons[0]), 0.02 * L, 1e-14);
   EXPECT_NEAR(area(obs[2].polygons[0]), 0.02, 1e-15);
   EXPECT_NEAR(area(obs[3].polygons[0]), 0.02, 1e-15);
+  const auto lines = outlines(obs[0]);
+  ASSERT_EQ(lines.size(), obs[0].polygons.size());
+  EXPECT_EQ(lines[0].size(), 5u);
+  EXPECT_EQ(lines[0].front(), lines[0].back());
 }
 
 TEST(Obstacles, CutCellsOfAPerforatedFallPipe) {

@@ -33,6 +33,9 @@ struct FallPipe {
   double hole_spacing = 0.0;  ///< distance between hole centres, the first at bottom + spacing/2
 };
 
+/// Closed polylines (last point = first) of an obstacle's polygons, for ParaView and PNG output.
+std::vector<std::vector<Vec2>> outlines(const Obstacle& obstacle);
+
 /// The walls, funnel and holes of a fall pipe as CCW polygons.
 std::vector<std::vector<Vec2>> fall_pipe_polygons(const FallPipe& pipe, const std::string& what);
 
