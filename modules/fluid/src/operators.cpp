@@ -60,6 +60,8 @@ void declare_parameters(core::ParamSchema& schema) {
                      "\"problem: symmetric\": true\n"
                      "\"aggregation: type\": uncoupled\n"
                      "\"smoother: type\": CHEBYSHEV\n"
+                     "\"smoother: params\":\n"
+                     "  \"chebyshev: degree\": 3\n"
                      "\"coarse: max size\": 800\n"
                      "\"repartition: enable\": true\n"
                      "\"repartition: start level\": 1\n"
