@@ -182,27 +182,30 @@ void FrameWriter::write(double t, long long step,
   x << stepname << "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n"
     << "        <Time Value=\"" << real(t) << "\"/>\n";
 
-  // Cell fields: global (nz, nx) arrays, each rank writing its owned block.
+  // Cell fields: global (1, nz, nx) arrays, each rank writing its owned block. The grid is a
+  // 3DCoRectMesh one cell thick, Z in [-h, 0]: ParaView's XDMF reader puts a 2DCoRectMesh in its
+  // Y-Z plane (it reads the two values as Z, Y with X = 0), away from the particles and outlines
+  // in the X-Y plane; with three dimensions, (Z, Y, X) order is unambiguous in every reader.
   const core::IndexBox own = decomposition_.owned_cells();
-  const std::string cells = std::to_string(spec.nz) + " " + std::to_string(spec.nx);
+  const std::string cells = "1 " + std::to_string(spec.nz) + " " + std::to_string(spec.nx);
   x << "        <Grid Name=\"fluid\" GridType=\"Uniform\">\n"
-    << "          <Topology TopologyType=\"2DCoRectMesh\" Dimensions=\"" << spec.nz + 1 << " "
+    << "          <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"2 " << spec.nz + 1 << " "
     << spec.nx + 1 << "\"/>\n"
-    << "          <Geometry GeometryType=\"ORIGIN_DXDY\">\n"
-    << "            <DataItem Dimensions=\"2\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">"
-    << real(spec.origin.z) << " " << real(spec.origin.x) << "</DataItem>\n"
-    << "            <DataItem Dimensions=\"2\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">"
-    << real(spec.h) << " " << real(spec.h) << "</DataItem>\n"
+    << "          <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n"
+    << "            <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">"
+    << real(-spec.h) << " " << real(spec.origin.z) << " " << real(spec.origin.x) << "</DataItem>\n"
+    << "            <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">"
+    << real(spec.h) << " " << real(spec.h) << " " << real(spec.h) << "</DataItem>\n"
     << "          </Geometry>\n";
   std::vector<double> block;
   for (const auto& [name, f] : cell_fields) {
     block.clear();
     for (int k = own.k0; k < own.k1; ++k)
       for (int i = own.i0; i < own.i1; ++i) block.push_back((*f)(i, k));
-    const hsize_t dims[2] = {static_cast<hsize_t>(spec.nz), static_cast<hsize_t>(spec.nx)};
-    const hsize_t start[2] = {static_cast<hsize_t>(own.k0), static_cast<hsize_t>(own.i0)};
-    const hsize_t count[2] = {static_cast<hsize_t>(own.nz()), static_cast<hsize_t>(own.nx())};
-    h5::write_block(file, "/fluid/" + name, H5T_NATIVE_DOUBLE, block.data(), 2, dims, start, count);
+    const hsize_t dims[3] = {1, static_cast<hsize_t>(spec.nz), static_cast<hsize_t>(spec.nx)};
+    const hsize_t start[3] = {0, static_cast<hsize_t>(own.k0), static_cast<hsize_t>(own.i0)};
+    const hsize_t count[3] = {1, static_cast<hsize_t>(own.nz()), static_cast<hsize_t>(own.nx())};
+    h5::write_block(file, "/fluid/" + name, H5T_NATIVE_DOUBLE, block.data(), 3, dims, start, count);
     x << "          <Attribute Name=\"" << name << "\" AttributeType=\"Scalar\" Center=\"Cell\">\n"
       << "            " << data_item(cells, "Float", 8, h5_rel, "/fluid/" + name) << "\n"
       << "          </Attribute>\n";

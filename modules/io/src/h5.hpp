@@ -67,7 +67,7 @@ class QuietErrors {
   void* data_ = nullptr;
 };
 
-/// Collective write of a dataset of `dims` (rank 1 or 2) from every rank's block of `count`
+/// Collective write of a dataset of `dims` (rank 1 to 3) from every rank's block of `count`
 /// elements at `start` (row-major, contiguous in `data`); empty blocks are allowed.
 void write_block(hid_t file, const std::string& name, hid_t mem_type, const void* data, int rank,
                  const hsize_t* dims, const hsize_t* start, const hsize_t* count);

@@ -292,9 +292,22 @@ TEST(Frames, XdmfWellFormedAndDatasetsMatchTheGlobalReference) {
     for (const auto* g : fr.all("Grid")) names.push_back(g->attr.at("Name"));
     EXPECT_EQ(names, (std::vector<std::string>{"fluid", "particles", "solids", "obstacles"}));
     const Element& fluid = *fr.all("Grid")[0];
-    EXPECT_EQ(fluid.all("Topology")[0]->attr.at("TopologyType"), "2DCoRectMesh");
+    EXPECT_EQ(fluid.all("Topology")[0]->attr.at("TopologyType"), "3DCoRectMesh");
     EXPECT_EQ(numbers(fluid.all("Topology")[0]->attr.at("Dimensions")),
-              (std::vector<long long>{kNz + 1, kNx + 1}));
+              (std::vector<long long>{2, kNz + 1, kNx + 1}));
+    // Origin and spacing in (Z, Y, X) order: the slab Z in [-h, 0], the tank corner at (0, 0).
+    const auto geometry = fluid.all("Geometry")[0]->all("DataItem");
+    ASSERT_EQ(geometry.size(), 2u);
+    std::istringstream origin(geometry[0]->text), spacing(geometry[1]->text);
+    double oz, oy, ox, dz, dy, dx;
+    origin >> oz >> oy >> ox;
+    spacing >> dz >> dy >> dx;
+    EXPECT_EQ(oz, -kH);
+    EXPECT_EQ(oy, 0.0);
+    EXPECT_EQ(ox, 0.0);
+    EXPECT_EQ(dz, kH);
+    EXPECT_EQ(dy, kH);
+    EXPECT_EQ(dx, kH);
     EXPECT_EQ(fluid.all("Attribute").size(), 2u);
     check_data_items(fr, dir, items);
   }

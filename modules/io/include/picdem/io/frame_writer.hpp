@@ -1,9 +1,10 @@
 #pragma once
 // ParaView output: one HDF5 file per frame (frames/frame_NNNNNN.h5, NNNNNN = step) and one XDMF
 // file (picdem.xdmf) indexing all frames as a temporal collection. Every frame is a spatial
-// collection of up to four grids: "fluid" (2DCoRectMesh with cell fields), "particles"
-// (Polyvertex with point scalars), "solids" and "obstacles" (Mixed polylines with a cell scalar
-// body_id). Written collectively: each rank writes its hyperslab of every dataset.
+// collection of up to four grids: "fluid" (3DCoRectMesh one cell thick, Z in [-h, 0], with cell
+// fields), "particles" (Polyvertex with point scalars), "solids" and "obstacles" (Mixed polylines
+// with a cell scalar body_id). Written collectively: each rank writes its hyperslab of every
+// dataset.
 //
 // Coordinates: the paper's (x, z) plane is written as ParaView's (X, Y) with Z = 0.
 #include <map>
