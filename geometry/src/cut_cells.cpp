@@ -555,8 +555,8 @@ void add_item(const Item& it, const std::vector<Item>& items, const std::vector<
     if (!bd.B.contains(s.i, s.k)) continue;
     bool hidden = false;
     if (!neighbours.empty()) {
-      const Vec2 mu = s.arc ? 0.5 * (s.p0 + s.p1) : 0.5 * (s.p0 + s.p1);
-      Vec2 m = mu;
+      // The piece's midpoint (on the arc for arcs) inside or on another body hides the piece.
+      Vec2 m = 0.5 * (s.p0 + s.p1);
       if (s.arc) {
         const double am = s.phi0 + 0.5 * s.dphi;
         m = s.c + s.rho * Vec2{std::cos(am), std::sin(am)};
@@ -812,7 +812,7 @@ CutCells build_cut_cells(const GridWindow& window, const std::vector<SolidPlacem
     if (items[j].tag >= 0) item_of_solid[items[j].tag] = static_cast<int>(j);
   }
 
-  // Union of the covered intervals on every line -> open face lengths.
+  // E_f = h - (covered length of face f), the union over all bodies (the E of eq. 5).
   CutCells cc;
   cc.window = window;
   cc.store = bd.W;
