@@ -19,16 +19,24 @@ std::string join(const std::vector<std::string>& columns) {
 // Keeps the header and the rows whose first value is <= keep_rows_up_to; rewrites the file
 // (through a temporary and a rename) only if rows were dropped.
 void continue_file(const std::string& path, const std::string& header, double keep_rows_up_to) {
-  std::ifstream in(path);
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream all;
+  all << in.rdbuf();
+  const std::string text = all.str();
+  std::istringstream lines(text);
   std::string first;
-  std::getline(in, first);
+  std::getline(lines, first);
   if (first != header)
     throw core::InputError("CSV file '" + path + "' has header '" + first + "', expected '" +
                            header + "' to append to it");
   std::vector<std::string> kept;
   bool dropped = false;
-  for (std::string line; std::getline(in, line);) {
+  for (std::string line; std::getline(lines, line);) {
     if (line.empty()) continue;
+    if (lines.eof() && text.back() != '\n') {
+      dropped = true;  // a row cut short by a crash while it was written
+      continue;
+    }
     if (std::strtod(line.c_str(), nullptr) <= keep_rows_up_to)
       kept.push_back(line);
     else

@@ -79,6 +79,20 @@ TEST(Csv, AppendContinuesAndDropsRowsAfterRestartTime) {
   comm.barrier();
 }
 
+TEST(Csv, AppendDropsARowCutShortByACrash) {
+  const Comm comm;
+  const std::string path = name("csv_cut");
+  if (comm.is_root()) std::ofstream(path) << "t,v\n0,1\n0.5,2\n1,3";  // last row unfinished
+  comm.barrier();
+  {
+    CsvWriter w(comm, path, {"t", "v"}, true);
+    w.row({1.0, 4.0});
+  }
+  comm.barrier();
+  EXPECT_EQ(slurp(path), "t,v\n0,1\n0.5,2\n1,4\n");
+  comm.barrier();
+}
+
 TEST(Csv, AppendToMissingFileWritesHeader) {
   const Comm comm;
   const std::string path = name("csv_missing");

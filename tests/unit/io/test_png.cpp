@@ -203,9 +203,9 @@ TEST(Png, SnapshotRejectsMismatchedSpeedOnEveryRank) {
   p.x = {0.5};
   p.z = {0.5};
   if (comm.rank() == comm.size() - 1) p.scalars["speed"] = {1.0, 2.0};  // one rank is wrong
-  EXPECT_THROW(picdem::io::render_snapshot(comm, name("png_bad"), {{0.0, 0.0}, {1.0, 1.0}}, p,
-                                           {}, {}, 200),
-               picdem::core::InputError);
+  EXPECT_THROW(
+      picdem::io::render_snapshot(comm, name("png_bad"), {{0.0, 0.0}, {1.0, 1.0}}, p, {}, {}, 200),
+      picdem::core::InputError);
 }
 
 }  // namespace
