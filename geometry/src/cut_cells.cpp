@@ -177,7 +177,8 @@ struct Builder {
   IndexBox W;  // window grown by one cell
   int nwx = 0, nwz = 0;
   std::vector<std::vector<Interval>> gx, gz;  // covered intervals on each line of W
-  std::vector<double> covered, best_solid_area, best_obstacle_area;
+  std::vector<double> covered;                // per cell: area terms of the visible boundary pieces
+  std::vector<double> best_solid_area, best_obstacle_area;
   std::vector<int> best_solid, best_obstacle;
   std::vector<WettedPiece> pieces;
 
@@ -572,7 +573,9 @@ void add_item(const Item& it, const std::vector<Item>& items, const std::vector<
     }
     if (hidden) continue;
     const std::size_t c = (s.i - bd.B.i0) + static_cast<std::size_t>(s.k - bd.B.k0) * bnx;
-    bd.term[c] += area_term(s);
+    const double a_piece = area_term(s);
+    bd.term[c] += a_piece;
+    bd.covered[bd.cell(s.i, s.k)] += a_piece;
     bd.touched[c] = 1;
     const Vec2 d = s.p1 - s.p0;
     WettedPiece p;
@@ -623,7 +626,6 @@ void add_item(const Item& it, const std::vector<Item>& items, const std::vector<
       if (faces == 0.0 && !bd.touched[c]) continue;
       const double area = std::clamp(0.25 * faces + bd.term[c], 0.0, 1.0);
       const long long g = bd.cell(bd.B.i0 + i, bd.B.k0 + k);
-      bd.covered[g] += area;
       if (it.tag >= 0) {
         if (area > bd.best_solid_area[g]) {
           bd.best_solid_area[g] = area;
@@ -839,8 +841,21 @@ CutCells build_cut_cells(const GridWindow& window, const std::vector<SolidPlacem
   }
   for (auto& e : cc.ex) e = std::max(0.0, e);
   for (auto& e : cc.ez) e = std::max(0.0, e);
+  // Covered area of the union: 1/4 (sum of covered face lengths) + the visible pieces' terms.
   cc.fraction = std::move(bd.covered);
-  for (auto& f : cc.fraction) f = 1.0 - std::min(1.0, f);
+  for (int k = 0; k < bd.nwz; ++k) {
+    for (int i = 0; i < bd.nwx; ++i) {
+      const std::size_t c = i + static_cast<std::size_t>(k) * bd.nwx;
+      const std::size_t fx = i + static_cast<std::size_t>(k) * (bd.nwx + 1);
+      const double open = cc.ex[fx] + cc.ex[fx + 1] + cc.ez[c] + cc.ez[c + bd.nwx];
+      if (open == 4.0 && cc.fraction[c] == 0.0) {
+        cc.fraction[c] = 1.0;
+        continue;
+      }
+      const double covered = 0.25 * (4.0 - open) + cc.fraction[c];
+      cc.fraction[c] = 1.0 - std::clamp(covered, 0.0, 1.0);
+    }
+  }
   cc.body = bd.best_solid;  // copied: the tiny-cell rule below still reads the best areas
   cc.obstacle = std::move(bd.best_obstacle);
   cc.tiny.assign(ncell, 0);
