@@ -319,11 +319,20 @@ SolveStats run_solver(const grid::Decomposition& d, const SolverSettings& settin
     cp.set("relaxation: type", std::string("Symmetric Gauss-Seidel"));
     cp.set("relaxation: sweeps", 2);
   }
+  // The default "smoother: params" carry a Chebyshev degree; a case that switches the smoother
+  // type keeps them through the merge, and Ifpack2 rejects unknown keys.
+  if (muelu.isSublist("smoother: params") &&
+      muelu.get<std::string>("smoother: type", "RELAXATION") != "CHEBYSHEV")
+    muelu.sublist("smoother: params").remove("chebyshev: degree", false);
   muelu.sublist("user data").set("Coordinates", coords);
   RCP<OP> prec;
   {
     core::ScopedTimer timer("fluid: pressure preconditioner");
-    prec = MueLu::CreateTpetraPreconditioner(RCP<OP>(A), muelu);
+    try {
+      prec = MueLu::CreateTpetraPreconditioner(RCP<OP>(A), muelu);
+    } catch (const Teuchos::Exceptions::InvalidParameter& e) {
+      throw core::InputError(std::string("solver/MueLu: MueLu rejected the settings: ") + e.what());
+    }
   }
   stats.setup_seconds = seconds_since(t0);
 
