@@ -162,6 +162,23 @@ std::vector<BoundaryPiece> to_world(const std::vector<BoundaryPiece>& body,
   return world;
 }
 
+void to_world_near(const std::vector<BoundaryPiece>& body, const geometry::Pose& pose,
+                   const Vec2& centre, double reach, std::vector<BoundaryPiece>& out) {
+  const double c = std::cos(pose.theta), s = std::sin(pose.theta);
+  auto place = [&](const Vec2& b) { return pose.x + Vec2{c * b.x - s * b.z, s * b.x + c * b.z}; };
+  const double reach2 = reach * reach;
+  for (const auto& piece : body) {
+    if (const auto* seg = std::get_if<Segment>(&piece)) {
+      const Segment w{place(seg->a), place(seg->b)};
+      if (core::norm2(closest_on_segment(w, centre) - centre) < reach2) out.emplace_back(w);
+    } else {
+      const auto& a = std::get<Arc>(piece);
+      const Arc w{place(a.centre), a.radius, a.phi0 + pose.theta, a.phi1 + pose.theta};
+      if (core::norm2(closest_on_arc(w, centre) - centre) < reach2) out.emplace_back(w);
+    }
+  }
+}
+
 Vec2 closest_on_segment(const Segment& s, const Vec2& p) {
   const Vec2 r = s.b - s.a;
   const double l2 = core::norm2(r);

@@ -5,15 +5,17 @@
 namespace picdem::dem {
 
 ContactCoefficients coefficients(const DemConfig& cfg, double m_ij) {
+  // every coefficient is m_ij times a constant of the case
+  const double k1 = cfg.g_stiffness / (cfg.theta * cfg.h);
   ContactCoefficients k;
   // eq. 10: k_xi = m_ij ||g|| / (theta dx)
-  k.k_n = m_ij * cfg.g_stiffness / (cfg.theta * cfg.h);
-  // eq. 11: c_xi = 2 alpha sqrt(m_ij k_xi)
-  k.c_n = 2.0 * cfg.alpha * std::sqrt(m_ij * k.k_n);
+  k.k_n = m_ij * k1;
+  // eq. 11: c_xi = 2 alpha sqrt(m_ij k_xi) = 2 alpha m_ij sqrt(||g|| / (theta dx))
+  k.c_n = m_ij * (2.0 * cfg.alpha * std::sqrt(k1));
   // eq. 12: k_eta = k_xi / (2 (1 + psi))
-  k.k_t = k.k_n / (2.0 * (1.0 + cfg.psi));
+  k.k_t = m_ij * (k1 / (2.0 * (1.0 + cfg.psi)));
   // eq. 13: c_eta = c_xi / sqrt(2 (1 + psi))
-  k.c_t = k.c_n / std::sqrt(2.0 * (1.0 + cfg.psi));
+  k.c_t = m_ij * (2.0 * cfg.alpha * std::sqrt(k1) / std::sqrt(2.0 * (1.0 + cfg.psi)));
   return k;
 }
 

@@ -166,7 +166,14 @@ bool DemSolver::solid_pair(const SolidState& a, const SolidState& b, ContactKine
     k.arm_b = -sb.radius * k.normal;
     return true;
   }
-  const auto wa = to_world(sa.body, pose_of(a)), wb = to_world(sb.body, pose_of(b));
+  // only the pieces of each boundary that can reach the other body
+  auto& wa = scratch_a_;
+  auto& wb = scratch_b_;
+  wa.clear();
+  wb.clear();
+  to_world_near(sa.body, pose_of(a), b.x, sb.radius + gap, wa);
+  to_world_near(sb.body, pose_of(b), a.x, sa.radius + gap, wb);
+  if (wa.empty() || wb.empty()) return false;
   const ClosestPoints cp = closest_points(wa, wb);
   // eq. 19 for any shapes: delta = 2 dx - distance between the real boundaries
   const double delta = gap - cp.distance;

@@ -28,6 +28,12 @@ struct ClosestPoints {
 std::vector<BoundaryPiece> to_world(const std::vector<BoundaryPiece>& body,
                                     const geometry::Pose& pose);
 
+/// The pieces of `body` (body frame) placed by `pose` whose distance to `centre` is below `reach`,
+/// appended to `out` in their boundary order (the pieces that can touch a body of bounding radius
+/// reach - gap centred there).
+void to_world_near(const std::vector<BoundaryPiece>& body, const geometry::Pose& pose,
+                   const Vec2& centre, double reach, std::vector<BoundaryPiece>& out);
+
 /// Closest point of a segment / an arc to a point.
 Vec2 closest_on_segment(const geometry::Segment& s, const Vec2& p);
 Vec2 closest_on_arc(const geometry::Arc& a, const Vec2& p);

@@ -136,6 +136,8 @@ class DemSolver {
   // neighbour list of owned solids (CSR): partners are local indices (owned, then ghosts),
   // sorted by global id
   std::vector<int> nbr_start_, nbr_;
+  // world-frame boundary pieces of the pair being evaluated (scratch, no state)
+  mutable std::vector<geometry::BoundaryPiece> scratch_a_, scratch_b_;
 };
 
 }  // namespace picdem::dem
