@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "fluid_test_support.hpp"
+#include "picdem/core/error.hpp"
 #include "picdem/fluid/fluid.hpp"
 
 using namespace picdem;
@@ -125,4 +127,26 @@ TEST(FluidTimeStep, CflOverAllRanks) {
   if (w.owned().contains(9, 6)) w(9, 6) = -4.0;  // the top-right face, owned by the last rank
   EXPECT_DOUBLE_EQ(fluid::cfl_time_step(u, w, s.h, 0.5, 1.0, comm), 0.5 * 0.02 / 4.0);
   EXPECT_DOUBLE_EQ(fluid::cfl_time_step(u, w, s.h, 0.5, 1e-3, comm), 1e-3);
+}
+
+TEST(FluidParameters, DefaultsAndErrorsNameTheKey) {
+  const auto p = fluid_test::tank_params(1.0, 0.5, 0.01);
+  const auto cfg = fluid::config_from(p);
+  EXPECT_EQ(cfg.rho, 1000.0);
+  EXPECT_EQ(cfg.nu, 1e-6);
+  EXPECT_EQ(cfg.g.x, 0.0);
+  EXPECT_EQ(cfg.g.z, -9.81);
+  EXPECT_FALSE(cfg.no_slip);
+  EXPECT_EQ(cfg.h, 0.01);
+  EXPECT_TRUE(
+      fluid::config_from(fluid_test::tank_params(1.0, 0.5, 0.01, {"fluid/walls=no_slip"})).no_slip);
+  for (const std::string bad : {"fluid/walls=sticky", "fluid/density=-1", "solver/tolerance=2"}) {
+    try {
+      fluid_test::tank_params(1.0, 0.5, 0.01, {bad});
+      ADD_FAILURE() << bad << " was accepted";
+    } catch (const core::InputError& e) {
+      const std::string key = bad.substr(0, bad.find('='));
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+    }
+  }
 }

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "fluid_test_support.hpp"
+#include "picdem/core/error.hpp"
 #include "picdem/core/rng.hpp"
 #include "picdem/fluid/pressure_solver.hpp"
 
@@ -189,4 +190,28 @@ TEST(PressureSolve, StillWaterIsHydrostaticAndStaysAtRest) {
       if (k <= 20) wmax = std::max(wmax, std::abs(w(i, k)));
   EXPECT_LT(comm.max(perr), 1e-9);
   EXPECT_LT(comm.max(wmax), 1e-9 * 9.81 * dt);
+}
+
+TEST(PressureSolve, RejectedMueLuSettingsNameTheKey) {
+  core::Comm comm;
+  const auto params = fluid_test::tank_params(
+      1.0, 1.0, 1.0 / 64,
+      {"solver/MueLu={\"smoother: type\": RELAXATION, \"smoother: params\": {\"bogus\": 1}}"});
+  const GridSpec s = spec_from(params);
+  Decomposition d(s, comm, 1);
+  const auto cells = dam(d);
+  const auto E = fluid::open_apertures(d);
+  FaceField u(d, Stagger::FaceX, 0.0), w(d, Stagger::FaceZ, 0.0);
+  const auto cfg = fluid::config_from(params);
+  fluid::apply_gravity(u, w, cells, 0.01, cfg);
+  Halo(d).forward(w);
+  fluid::enforce_walls(u, w, cfg, d);
+  CellField p(d, Stagger::Cell, 0.0);
+  fluid::PressureSolver solver(d, params);
+  try {
+    solver.solve(cells, E, u, w, {}, 0.01, cfg, p);
+    ADD_FAILURE() << "bad MueLu key accepted";
+  } catch (const core::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("solver/MueLu"), std::string::npos) << e.what();
+  }
 }
