@@ -29,6 +29,16 @@ void declare_parameters(core::ParamSchema& s) {
   s.integer("output/png_width", 1000, "width of the PNG pictures [pixels]").at_least(64).at_most(8000);
   s.real("output/progress_seconds", 5.0, "wall seconds between progress lines").non_negative();
 
+  s.section("coupling", "The fluid-solid coupling.");
+  s.real("coupling/beta", 0.5,
+         "gap damping (eq. 20): particle velocity factor at a contact point; 1 switches it off")
+      .at_least(0.0)
+      .at_most(1.0);
+  s.real("coupling/tiny_cell_fraction", 1e-3,
+         "cut cells with a smaller fluid fraction are made solid (doc/geometry.md)")
+      .at_least(0.0)
+      .less_than(0.5);
+
   auto& water = s.family("water", "Where the fluid is at t = 0 (their union; none: a dry run).");
   auto& box = water.variant("box", "an axis-aligned block of water");
   box.reals("x", {0.0, 0.1}, "[x_min, x_max] of the block [m]").size(2, 2);

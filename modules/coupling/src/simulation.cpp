@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <limits>
 #include <sstream>
 
@@ -12,6 +10,7 @@
 #include "picdem/core/timer.hpp"
 #include "picdem/coupling/free_surface.hpp"
 #include "picdem/coupling/output.hpp"
+#include "picdem/coupling/solids_in_fluid.hpp"
 #include "picdem/dem/dem_solver.hpp"
 #include "picdem/dem/parameters.hpp"
 #include "picdem/fluid/fluid.hpp"
@@ -41,6 +40,7 @@ struct SimulationState {
   std::unique_ptr<fluid::PressureSolver> pressure;
   particles::ParticleSet particles;
   FaceField u, w, u_old, w_old, weight_u, weight_w;
+  grid::GridArray<signed char> u_valid, w_valid;
   grid::CellField p;
   fluid::CellStates cells;
   grid::GridArray<int> count;
@@ -51,11 +51,16 @@ struct SimulationState {
   // solids
   std::vector<geometry::Obstacle> obstacles;
   std::unique_ptr<dem::DemSolver> dem;
+  SolidScene scene;             // poses at the start of the step (cut cells)
+  geometry::CutCells cut;
+  std::vector<core::SolidLoads> collision_loads, fluid_loads;
+  double beta = 1.0;
 
   // run
   double t = 0.0, t_end = 0.0;
   long long step = 0;
   Diagnostics diag;
+  fluid::SolveStats last_solve;
   std::unique_ptr<Output> output;
 };
 
@@ -95,6 +100,7 @@ Simulation::Simulation(core::Comm comm, core::Params params, std::string output_
   s.spec = grid::spec_from(params);
   s.t_end = params.real("time/end");
   s.has_fluid = !params.sublist_names("water").empty();
+  s.beta = params.real("coupling/beta");
   s.particle_cfg = particles::config_from(params);
   const int halo = std::max(3, particles::required_halo(s.particle_cfg));
   s.decomp = std::make_unique<grid::Decomposition>(s.spec, comm, halo,
@@ -105,11 +111,6 @@ Simulation::Simulation(core::Comm comm, core::Params params, std::string output_
 
   s.obstacles = geometry::obstacles_from(params);
   const auto solids = dem::solids_from(params);
-  if (s.has_fluid && (!solids.empty() || !s.obstacles.empty()))
-    throw core::InputError(
-        "this case has water together with solids or obstacles: the fluid-solid coupling is not "
-        "part of this version; remove `solids`/`obstacles` or `water`");
-
   if (!solids.empty() || !s.has_fluid) {
     const core::Box2 tank{s.spec.origin, s.spec.origin + Vec2{s.spec.length(), s.spec.height()}};
     std::vector<std::vector<Vec2>> polys;
@@ -126,13 +127,19 @@ Simulation::Simulation(core::Comm comm, core::Params params, std::string output_
     s.u = FaceField(d, Stagger::FaceX);
     s.w = FaceField(d, Stagger::FaceZ);
     s.u_old = s.u, s.w_old = s.w, s.weight_u = s.u, s.weight_w = s.w;
+    s.u_valid = grid::GridArray<signed char>(d, Stagger::FaceX, 0);
+    s.w_valid = grid::GridArray<signed char>(d, Stagger::FaceZ, 0);
     s.p = grid::CellField(d, Stagger::Cell);
     s.cells = fluid::CellStates(d, Stagger::Cell, static_cast<signed char>(CellState::Air));
     s.count = grid::GridArray<int>(d, Stagger::Cell, 0);
     s.occupancy = grid::CellField(d, Stagger::Cell);
     s.apertures = fluid::open_apertures(d);
-    s.particles = particles::seed(d, s.particle_cfg,
-                                  [&](Vec2 c) { return inside_water(params, c); });
+    // Water is seeded where neither solids nor obstacles are.
+    const SolidScene scene0 = scene_of(s.dem.get(), s.obstacles);
+    const SolidLocator locator(scene0);
+    s.particles = particles::seed(d, s.particle_cfg, [&](Vec2 c) {
+      return inside_water(params, c) && !locator.inside(c);
+    });
     const double n = static_cast<double>(s.particle_cfg.per_cell_1d);
     s.particle_mass = s.fluid_cfg.rho * s.spec.h * s.spec.h / (n * n);
   }
@@ -147,130 +154,207 @@ long long Simulation::step_count() const { return s_->step; }
 const core::Params& Simulation::params() const { return s_->params; }
 
 // ---------------------------------------------------------------------------------------------
-// Phases of a step (paper Fig. 4). Each reads the state left by the one before it.
+// The phases of a step (paper Fig. 4). Each reads what the one before it left.
 
 namespace {
 
-// transfer (cells): a cell holding particles is fluid, else air.
-void mark_cells(SimulationState& s) {
-  core::ScopedTimer timer("transfer: mark cells");
-  particles::count_per_cell(s.particles, *s.halo, s.count);
-  const auto b = s.cells.storage();
-  for (int k = b.k0; k < b.k1; ++k)
-    for (int i = b.i0; i < b.i1; ++i)
-      s.cells(i, k) = static_cast<signed char>(s.count(i, k) > 0 ? CellState::Fluid : CellState::Air);
-}
-
-void extend(SimulationState& s, FaceField& u, FaceField& w) {
-  grid::GridArray<signed char> vu(*s.decomp, Stagger::FaceX, 0), vw(*s.decomp, Stagger::FaceZ, 0);
-  fluid::fluid_faces(s.cells, s.apertures, vu, vw);
-  fluid::extend_velocity(u, w, vu, vw, s.decomp->halo(), *s.halo);
-}
-
-}  // namespace
-
-void Simulation::step() {
-  SimulationState& s = *s_;
-  if (!s.has_fluid) {
-    const double dt = std::min(s.params.real("time/dt_max"), s.t_end - s.t);
-    s.dem->advance(dt, {});
-    s.t += dt;
-    ++s.step;
-    s.diag.t = s.t, s.diag.dt = dt, s.diag.step = s.step;
-    return;
-  }
-  const auto& d = *s.decomp;
-  const auto& cfg = s.fluid_cfg;
-
-  // time step from the CFL condition on the last grid velocity
-  double dt = fluid::cfl_time_step(s.u, s.w, s.spec.h, s.params.real("time/cfl"),
-                                   s.params.real("time/dt_max"), s.comm);
-  dt = std::min(dt, s.t_end - s.t);
+// time step: CFL on the last grid velocity, capped; a collapse below dt_min is a blown-up run.
+double choose_time_step(SimulationState& s) {
+  const double dt_max = std::min(s.params.real("time/dt_max"), s.t_end - s.t);
+  if (!s.has_fluid) return dt_max;
+  const double dt =
+      std::min(dt_max, fluid::cfl_time_step(s.u, s.w, s.spec.h, s.params.real("time/cfl"),
+                                            s.params.real("time/dt_max"), s.comm));
   if (!(dt >= s.params.real("time/dt_min")) && s.t_end - s.t > s.params.real("time/dt_min")) {
     std::ostringstream m;
     m << "step " << s.step << " at t = " << s.t << " s: the time step fell to " << dt
       << " s (below time/dt_min): the flow has blown up";
     throw core::SolverError(m.str());
   }
+  return dt;
+}
 
-  // transfer: particles -> grid (u~ before forces is kept for the FLIP increment)
-  mark_cells(s);
-  {
-    core::ScopedTimer timer("transfer: particles to grid");
-    particles::to_grid(s.particles, d, *s.halo, s.particle_cfg, s.u, s.w, s.weight_u, s.weight_w);
-    fluid::enforce_walls(s.u, s.w, cfg, d);
-    extend(s, s.u, s.w);
-    s.u_old = s.u, s.w_old = s.w;
+// geometry: solids at X^n -> cut cells, face apertures E, wetted boundary pieces.
+void place_solids(SimulationState& s) {
+  core::ScopedTimer timer("geometry");
+  s.scene = scene_of(s.dem.get(), s.obstacles);
+  if (s.scene.placements.empty() && s.scene.obstacles.empty()) return;
+  s.cut = cut_cells(s.scene, *s.decomp, s.params.real("coupling/tiny_cell_fraction"), s.apertures);
+}
+
+// transfer (cells): fluid = holds particles and is not covered; solid = covered; else air.
+void mark_cells(SimulationState& s) {
+  core::ScopedTimer timer("transfer: mark cells");
+  particles::count_per_cell(s.particles, *s.halo, s.count);
+  const bool cut = !s.scene.placements.empty() || !s.scene.obstacles.empty();
+  const auto b = s.cells.storage();
+  for (int k = b.k0; k < b.k1; ++k)
+    for (int i = b.i0; i < b.i1; ++i) {
+      CellState c = s.count(i, k) > 0 ? CellState::Fluid : CellState::Air;
+      if (cut && s.cut.fluid_fraction(i, k) <= 0.0) c = CellState::Solid;
+      s.cells(i, k) = static_cast<signed char>(c);
+    }
+}
+
+// Faces carrying fluid velocity (open, next to a fluid cell), plus faces closed by a body, which
+// carry its rigid velocity; then velocities are extended into the rest.
+void extend(SimulationState& s, FaceField& u, FaceField& w) {
+  fluid::fluid_faces(s.cells, s.apertures, s.u_valid, s.w_valid);
+  if (!s.scene.placements.empty() || !s.scene.obstacles.empty())
+    rigid_face_velocities(s.scene, s.cut, s.apertures, *s.decomp, u, w, s.u_valid, s.w_valid);
+  fluid::extend_velocity(u, w, s.u_valid, s.w_valid, s.decomp->halo(), *s.halo);
+}
+
+// transfer: particles -> grid faces; u~ before forces is kept for the FLIP increment.
+void particles_to_grid(SimulationState& s) {
+  core::ScopedTimer timer("transfer: particles to grid");
+  particles::to_grid(s.particles, *s.decomp, *s.halo, s.particle_cfg, s.u, s.w, s.weight_u,
+                     s.weight_w);
+  fluid::enforce_walls(s.u, s.w, s.fluid_cfg, *s.decomp);
+  extend(s, s.u, s.w);
+  s.u_old = s.u, s.w_old = s.w;
+}
+
+// forces: gravity and explicit viscosity -> u~.
+void add_forces(SimulationState& s, double dt) {
+  core::ScopedTimer timer("forces");
+  fluid::apply_gravity(s.u, s.w, s.cells, dt, s.fluid_cfg);
+  fluid::apply_viscosity(s.u, s.w, s.cells, dt, s.fluid_cfg, *s.decomp, *s.halo);
+  fluid::enforce_walls(s.u, s.w, s.fluid_cfg, *s.decomp);
+}
+
+// contact: collision loads predicted at level n with dt in eq. 8 (for eq. 6 inside the PPE).
+void predict_contacts(SimulationState& s, double dt) {
+  core::ScopedTimer timer("contact prediction");
+  s.collision_loads = s.dem ? s.dem->predicted_collision_loads(dt) : std::vector<core::SolidLoads>{};
+}
+
+// pressure: the E-weighted PPE with the solids' velocities substituted (eqs. 5-6), solved
+// implicitly for p^{n+1}; the previous pressure is the initial guess.
+void solve_pressure(SimulationState& s, double dt) {
+  std::vector<fluid::SolidCoupling> couplings;
+  if (s.dem) {
+    core::ScopedTimer timer("geometry");
+    couplings = solid_couplings(s.scene, s.cut, s.cells, *s.decomp, s.collision_loads,
+                                s.fluid_cfg.g, dt, s.comm);
   }
+  core::ScopedTimer timer("pressure");
+  s.last_solve = s.pressure->solve(s.cells, s.apertures, s.u, s.w, couplings, dt, s.fluid_cfg, s.p);
+}
 
-  // forces: gravity and explicit viscosity -> u~
-  {
-    core::ScopedTimer timer("forces");
-    fluid::apply_gravity(s.u, s.w, s.cells, dt, cfg);
-    fluid::apply_viscosity(s.u, s.w, s.cells, dt, cfg, d, *s.halo);
-    fluid::enforce_walls(s.u, s.w, cfg, d);
-  }
+// project: u^{n+1} = u~ - dt/rho grad p on open faces.
+void project(SimulationState& s, double dt) {
+  core::ScopedTimer timer("project");
+  fluid::project(s.u, s.w, s.p, s.cells, s.apertures, dt, s.fluid_cfg);
+  fluid::enforce_walls(s.u, s.w, s.fluid_cfg, *s.decomp);
+}
 
-  // pressure: E-weighted PPE, previous pressure as the initial guess
-  fluid::SolveStats stats;
-  {
-    core::ScopedTimer timer("pressure");
-    stats = s.pressure->solve(s.cells, s.apertures, s.u, s.w, {}, dt, cfg, s.p);
-  }
+// solids: F_fluid = J p^{n+1}, then K DEM subcycles (eqs. 21-25) with it held fixed.
+void advance_solids(SimulationState& s, double dt) {
+  if (!s.dem) return;
+  core::ScopedTimer timer("solids");
+  s.fluid_loads.clear();
+  if (s.has_fluid)
+    s.fluid_loads = fluid_loads(s.scene, s.cut, s.cells, s.p, *s.decomp, *s.dem, s.comm);
+  s.dem->advance(dt, s.fluid_loads);
+}
 
-  // project: u^{n+1} = u~ - dt/rho grad p; extend into air; walls
-  {
-    core::ScopedTimer timer("project");
-    fluid::project(s.u, s.w, s.p, s.cells, s.apertures, dt, cfg);
-    fluid::enforce_walls(s.u, s.w, cfg, d);
-    extend(s, s.u, s.w);
-    fluid::enforce_walls(s.u, s.w, cfg, d);
-  }
+// transfer: grid -> particles (FLIP/PIC blend or APIC), then gap damping (eq. 20).
+void grid_to_particles(SimulationState& s) {
+  core::ScopedTimer timer("transfer: grid to particles");
+  // Faces closed by solids carry the solids' new rigid velocities.
+  s.scene = scene_of(s.dem.get(), s.obstacles);
+  extend(s, s.u, s.w);
+  fluid::enforce_walls(s.u, s.w, s.fluid_cfg, *s.decomp);
+  particles::from_grid(s.particles, s.particle_cfg, s.u_old, s.w_old, s.u, s.w, s.spec);
+  if (s.dem && s.beta < 1.0)
+    damp_gap_particles(s.particles, all_contacts(*s.dem, s.comm), s.spec.h, s.beta);
+}
 
-  // transfer: grid -> particles
-  {
-    core::ScopedTimer timer("transfer: grid to particles");
-    particles::from_grid(s.particles, s.particle_cfg, s.u_old, s.w_old, s.u, s.w, s.spec);
-  }
+// advect: move through the divergence-free field, out of solids, reseed, migrate.
+void advect_particles(SimulationState& s, double dt) {
+  core::ScopedTimer timer("advect");
+  const SolidLocator locator(s.scene);
+  const bool solids = !s.scene.placements.empty() || !s.scene.obstacles.empty();
+  const double h = s.spec.h;
+  std::function<void(double&, double&)> out_of_solids;
+  if (solids)
+    out_of_solids = [&](double& x, double& z) {
+      Vec2 q, n;
+      for (int pass = 0; pass < 3 && locator.inside({x, z}, &q, &n); ++pass)
+        x = q.x + 0.1 * h * n.x, z = q.z + 0.1 * h * n.z;
+    };
+  particles::advect(s.particles, s.particle_cfg, s.u, s.w, s.spec, dt, out_of_solids);
+  particles::migrate(s.particles, *s.decomp);
+  particles::count_per_cell(s.particles, *s.halo, s.count);
+  std::function<bool(Vec2)> reject;
+  if (solids) reject = [&](Vec2 p) { return locator.inside(p); };
+  particles::reseed(s.particles, s.particle_cfg, *s.decomp, s.count, s.cells, s.u, s.w, s.step,
+                    reject);
+}
 
-  // advect: move, reseed, migrate
-  {
-    core::ScopedTimer timer("advect");
-    particles::advect(s.particles, s.particle_cfg, s.u, s.w, s.spec, dt);
-    particles::migrate(s.particles, d);
-    particles::count_per_cell(s.particles, *s.halo, s.count);
-    particles::reseed(s.particles, s.particle_cfg, d, s.count, s.cells, s.u, s.w, s.step);
-  }
-
-  s.t += dt;
-  ++s.step;
-
-  // diagnostics
+// Figures of the new state; a non-finite value anywhere stops the run on every rank.
+void record_diagnostics(SimulationState& s, double dt) {
   Diagnostics& g = s.diag;
   g.t = s.t, g.dt = dt, g.step = s.step;
-  g.ppe_iterations = stats.iterations;
-  g.ppe_residual = stats.relative_residual;
+  g.ppe_iterations = s.last_solve.iterations;
+  g.ppe_residual = s.last_solve.relative_residual;
   double ke = 0.0, front = -std::numeric_limits<double>::infinity(), vmax = 0.0;
+  bool finite = true;
   const auto& P = s.particles;
   for (std::size_t n = 0; n < P.x.size(); ++n) {
     const double v2 = P.u[n] * P.u[n] + P.w[n] * P.w[n];
     ke += 0.5 * s.particle_mass * v2;
     front = std::max(front, P.x[n]);
     vmax = std::max(vmax, std::sqrt(v2));
-    if (!std::isfinite(v2) || !std::isfinite(P.x[n]) || !std::isfinite(P.z[n])) {
-      std::ostringstream m;
-      m << "step " << s.step << " at t = " << s.t << " s: particle " << P.id[n]
-        << " has a non-finite position or velocity: the flow has blown up";
-      throw core::SolverError(m.str());
+    finite = finite && std::isfinite(v2) && std::isfinite(P.x[n]) && std::isfinite(P.z[n]);
+  }
+  double ke_solids = 0.0;
+  if (s.dem)
+    for (const auto& st : s.dem->owned()) {
+      ke_solids += 0.5 * st.mass * core::norm2(st.v) + 0.5 * st.inertia * st.omega * st.omega;
+      finite = finite && std::isfinite(st.x.x) && std::isfinite(st.x.z) && std::isfinite(st.v.x);
     }
+  if (s.comm.any(!finite)) {
+    std::ostringstream m;
+    m << "step " << s.step << " at t = " << s.t
+      << " s: a particle or solid has a non-finite position or velocity: the run has blown up";
+    throw core::SolverError(m.str());
   }
   g.kinetic_energy = s.comm.sum(ke);
-  g.front_x = s.comm.max(front) - s.spec.origin.x;
+  g.solid_kinetic_energy = s.comm.sum(ke_solids);
+  g.front_x = s.has_fluid ? s.comm.max(front) - s.spec.origin.x : 0.0;
   g.max_speed = s.comm.max(vmax);
   g.particles = s.comm.sum(static_cast<long long>(P.x.size()));
-  particle_occupancy(s.particles, d, *s.halo, s.particle_cfg.per_cell_1d * s.particle_cfg.per_cell_1d,
-                     s.occupancy);
-  g.fluid_volume = occupied_area(s.occupancy, d, s.comm);
+  if (s.has_fluid) {
+    particle_occupancy(s.particles, *s.decomp, *s.halo,
+                       s.particle_cfg.per_cell_1d * s.particle_cfg.per_cell_1d, s.occupancy);
+    g.fluid_volume = occupied_area(s.occupancy, *s.decomp, s.comm);
+  }
+}
+
+}  // namespace
+
+void Simulation::step() {
+  SimulationState& s = *s_;
+  const double dt = choose_time_step(s);
+  if (s.has_fluid) {
+    place_solids(s);            // geometry
+    mark_cells(s);              // transfer (cells)
+    particles_to_grid(s);       // transfer
+    add_forces(s, dt);          // forces
+    predict_contacts(s, dt);    // contact
+    solve_pressure(s, dt);      // pressure
+    project(s, dt);             // project
+    advance_solids(s, dt);      // solids
+    grid_to_particles(s);       // transfer
+    advect_particles(s, dt);    // advect
+  } else {
+    advance_solids(s, dt);      // dry: solids only
+  }
+  s.t += dt;
+  ++s.step;
+  record_diagnostics(s, dt);
 }
 
 double Simulation::pressure_at(double x, double z) const {

@@ -1,0 +1,88 @@
+#pragma once
+// The fluid-solid part of the coupled step (METHOD.md sections 3, 4 and 6): cut cells at the
+// solids' poses, the solid couplings of the augmented pressure equation (eqs. 5-6), the fluid
+// loads J p, rigid velocities on covered faces, pushing particles out of solids and damping the
+// fluid trapped in contact gaps (eq. 20). Plain functions over plain data.
+#include <cstdint>
+#include <vector>
+
+#include "picdem/core/comm.hpp"
+#include "picdem/core/solid_state.hpp"
+#include "picdem/dem/dem_solver.hpp"
+#include "picdem/fluid/fluid.hpp"
+#include "picdem/fluid/pressure_solver.hpp"
+#include "picdem/geometry/cut_cells.hpp"
+#include "picdem/grid/field.hpp"
+#include "picdem/particles/particle_set.hpp"
+
+namespace picdem::coupling {
+
+/// The solids a rank sees (owned + ghosts, each with its shape) and the fixed obstacles.
+struct SolidScene {
+  std::vector<geometry::SolidPlacement> placements;
+  std::vector<core::SolidState> states;  ///< parallel to placements
+  std::vector<geometry::Obstacle> obstacles;
+};
+
+SolidScene scene_of(const dem::DemSolver* dem, const std::vector<geometry::Obstacle>& obstacles);
+
+/// Cut cells over this rank's storage window; apertures = min(tank apertures, cut-cell E).
+geometry::CutCells cut_cells(const SolidScene& scene, const grid::Decomposition& d,
+                             double tiny_fraction, fluid::Apertures& apertures);
+
+/// One SolidCoupling per solid with pieces in this rank's owned fluid cells (partial lists,
+/// joined by id in the solver): a_{s,c} = (int n dl, int r x n dl), M_s, and
+/// V* = V^n + dt M^-1 (F_g + F_coll) with F_coll the collision loads predicted at level n.
+std::vector<fluid::SolidCoupling> solid_couplings(const SolidScene& scene,
+                                                  const geometry::CutCells& cut,
+                                                  const fluid::CellStates& cells,
+                                                  const grid::Decomposition& d,
+                                                  const std::vector<core::SolidLoads>& collision,
+                                                  core::Vec2 gravity, double dt,
+                                                  const core::Comm& comm);
+
+/// Pressure loads J p = -sum_c a_{s,c} p_c on every owned solid of `dem` (summed over ranks).
+std::vector<core::SolidLoads> fluid_loads(const SolidScene& scene, const geometry::CutCells& cut,
+                                          const fluid::CellStates& cells,
+                                          const grid::CellField& p, const grid::Decomposition& d,
+                                          const dem::DemSolver& dem, const core::Comm& comm);
+
+/// Faces closed by a body get its rigid velocity (obstacles: 0) and are marked valid, so that
+/// interpolation next to a solid sees the solid's motion.
+void rigid_face_velocities(const SolidScene& scene, const geometry::CutCells& cut,
+                           const fluid::Apertures& E, const grid::Decomposition& d,
+                           grid::FaceField& u, grid::FaceField& w,
+                           grid::GridArray<signed char>& u_valid,
+                           grid::GridArray<signed char>& w_valid);
+
+/// Finds the body holding a point and the nearest point on its boundary.
+class SolidLocator {
+ public:
+  explicit SolidLocator(const SolidScene& scene);
+  /// True when p is inside a solid or obstacle; `surface` is then the nearest boundary point
+  /// and `normal` the body's outward normal there.
+  bool inside(core::Vec2 p, core::Vec2* surface = nullptr, core::Vec2* normal = nullptr) const;
+
+ private:
+  const SolidScene& scene_;
+  double cell_ = 1.0;
+  core::Vec2 lo_;
+  int nx_ = 0, nz_ = 0;
+  std::vector<std::vector<int>> buckets_;  // solid indices by bucket; obstacles after solids
+  std::vector<std::vector<core::Vec2>> obstacle_polys_;
+};
+
+/// Moves particles found inside a body to just outside its surface (a tenth of a cell).
+void push_out(particles::ParticleSet& ps, const SolidLocator& locator, double h);
+
+/// Eq. 20: particles in the band of an active contact (4h along the tangent, centred at the
+/// contact point, h either side of it along the normal) have their velocity scaled by C, linear
+/// from 1 at the band's ends to beta at the contact point. Contacts are gathered from all ranks.
+/// Returns the number of particles damped on this rank.
+long long damp_gap_particles(particles::ParticleSet& ps, const std::vector<dem::Contact>& contacts,
+                             double h, double beta);
+
+/// Every rank's active contacts, on every rank, in a fixed order.
+std::vector<dem::Contact> all_contacts(const dem::DemSolver& dem, const core::Comm& comm);
+
+}  // namespace picdem::coupling

@@ -1,0 +1,359 @@
+#include "picdem/coupling/solids_in_fluid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <tuple>
+#include <unordered_map>
+
+#include "picdem/geometry/outline.hpp"
+
+namespace picdem::coupling {
+
+using core::Vec2;
+using grid::CellState;
+using grid::Stagger;
+
+SolidScene scene_of(const dem::DemSolver* dem, const std::vector<geometry::Obstacle>& obstacles) {
+  SolidScene scene;
+  scene.obstacles = obstacles;
+  if (!dem) return scene;
+  auto add = [&](const core::SolidState& st) {
+    scene.placements.push_back({st.id, dem->shape_of(st.id), {st.x, st.theta}});
+    scene.states.push_back(st);
+  };
+  for (const auto& st : dem->owned()) add(st);
+  for (const auto& st : dem->ghosts()) add(st);
+  return scene;
+}
+
+geometry::CutCells cut_cells(const SolidScene& scene, const grid::Decomposition& d,
+                             double tiny_fraction, fluid::Apertures& apertures) {
+  const auto& spec = d.spec();
+  geometry::GridWindow window{spec.origin, spec.h, d.storage(Stagger::Cell)};
+  geometry::CutCellOptions options;
+  options.tiny_fraction = tiny_fraction;
+  auto cut = geometry::build_cut_cells(window, scene.placements, scene.obstacles, options);
+  apertures = fluid::open_apertures(d);
+  const auto bu = apertures.E_x.storage();
+  for (int k = bu.k0; k < bu.k1; ++k)
+    for (int i = bu.i0; i < bu.i1; ++i)
+      apertures.E_x(i, k) = std::min(apertures.E_x(i, k), cut.E_x(i, k));
+  const auto bw = apertures.E_z.storage();
+  for (int k = bw.k0; k < bw.k1; ++k)
+    for (int i = bw.i0; i < bw.i1; ++i)
+      apertures.E_z(i, k) = std::min(apertures.E_z(i, k), cut.E_z(i, k));
+  return cut;
+}
+
+namespace {
+
+// A table of `width` doubles per solid id, summed over ranks (ids are 0 .. n-1).
+struct IdTable {
+  int width;
+  std::vector<double> v;
+  IdTable(std::int64_t n, int w) : width(w), v(static_cast<std::size_t>(n * w), 0.0) {}
+  double* row(std::int64_t id) { return &v[static_cast<std::size_t>(id * width)]; }
+};
+
+std::int64_t solid_count(const SolidScene& scene, const core::Comm& comm) {
+  long long n = 0;
+  for (const auto& st : scene.states) n = std::max(n, static_cast<long long>(st.id) + 1);
+  return comm.max(n);
+}
+
+bool fluid_cell(const fluid::CellStates& cells, int i, int k) {
+  return cells(i, k) == static_cast<signed char>(CellState::Fluid);
+}
+
+}  // namespace
+
+std::vector<fluid::SolidCoupling> solid_couplings(const SolidScene& scene,
+                                                  const geometry::CutCells& cut,
+                                                  const fluid::CellStates& cells,
+                                                  const grid::Decomposition& d,
+                                                  const std::vector<core::SolidLoads>& collision,
+                                                  Vec2 gravity, double dt,
+                                                  const core::Comm& comm) {
+  const auto n = solid_count(scene, comm);
+  if (n == 0) return {};
+  // Predicted collision loads of every solid, from their owners.
+  IdTable coll(n, 3);
+  for (const auto& l : collision) {
+    double* r = coll.row(l.id);
+    r[0] = l.force.x, r[1] = l.force.z, r[2] = l.torque;
+  }
+  comm.sum_in_place(coll.v);
+
+  const auto own = d.owned_cells();
+  const auto& spec = d.spec();
+  std::map<int, fluid::SolidCoupling> by_body;  // body index -> coupling, in body order
+  std::map<std::pair<int, long long>, std::size_t> slot;
+  for (const auto& piece : cut.pieces) {
+    if (piece.body < 0 || !own.contains(piece.i, piece.k) || !fluid_cell(cells, piece.i, piece.k))
+      continue;
+    auto& c = by_body[piece.body];
+    const long long gid = spec.cell_gid(piece.i, piece.k);
+    auto [it, fresh] = slot.try_emplace({piece.body, gid}, c.cells.size());
+    if (fresh) {
+      c.cells.push_back(gid);
+      c.a.push_back({0.0, 0.0, 0.0});
+    }
+    auto& a = c.a[it->second];
+    a[0] += piece.n_dl.x, a[1] += piece.n_dl.z, a[2] += piece.r_cross_n_dl;
+  }
+  std::vector<fluid::SolidCoupling> out;
+  for (auto& [body, c] : by_body) {
+    const auto& st = scene.states[static_cast<std::size_t>(body)];
+    c.id = st.id;
+    c.mass = st.mass;
+    c.inertia = st.inertia;
+    const double* f = coll.row(st.id);
+    // V* = V^n + dt M^-1 (F_g + F_coll)   (eq. 6 without the pressure term)
+    c.v_star = {st.v.x + dt * (gravity.x + f[0] / st.mass), st.v.z + dt * (gravity.z + f[1] / st.mass),
+                st.omega + dt * f[2] / st.inertia};
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+std::vector<core::SolidLoads> fluid_loads(const SolidScene& scene, const geometry::CutCells& cut,
+                                          const fluid::CellStates& cells,
+                                          const grid::CellField& p, const grid::Decomposition& d,
+                                          const dem::DemSolver& dem, const core::Comm& comm) {
+  const auto n = solid_count(scene, comm);
+  IdTable load(std::max<std::int64_t>(n, 1), 3);
+  const auto own = d.owned_cells();
+  for (const auto& piece : cut.pieces) {
+    if (piece.body < 0 || !own.contains(piece.i, piece.k) || !fluid_cell(cells, piece.i, piece.k))
+      continue;
+    const double pc = p(piece.i, piece.k);
+    double* r = load.row(scene.states[static_cast<std::size_t>(piece.body)].id);
+    // J p = - sum_c a_{s,c} p_c : force -int p n dl, torque -int p (r x n) dl
+    r[0] -= piece.n_dl.x * pc, r[1] -= piece.n_dl.z * pc, r[2] -= piece.r_cross_n_dl * pc;
+  }
+  comm.sum_in_place(load.v);
+  std::vector<core::SolidLoads> out;
+  for (const auto& st : dem.owned()) {
+    const double* r = load.row(st.id);
+    out.push_back({st.id, {r[0], r[1]}, r[2]});
+  }
+  return out;
+}
+
+void rigid_face_velocities(const SolidScene& scene, const geometry::CutCells& cut,
+                           const fluid::Apertures& E, const grid::Decomposition& d,
+                           grid::FaceField& u, grid::FaceField& w,
+                           grid::GridArray<signed char>& u_valid,
+                           grid::GridArray<signed char>& w_valid) {
+  const auto& spec = d.spec();
+  auto rigid = [&](int body, Vec2 x) {
+    if (body < 0) return Vec2{};
+    const auto& st = scene.states[static_cast<std::size_t>(body)];
+    return st.v + core::cross(st.omega, x - st.x);
+  };
+  auto covering = [&](int i0, int k0, int i1, int k1, bool& any) {
+    int b = cut.cutting_body(i0, k0);
+    if (b < 0) b = cut.cutting_body(i1, k1);
+    any = b >= 0 || cut.cutting_obstacle(i0, k0) >= 0 || cut.cutting_obstacle(i1, k1) >= 0;
+    return b;
+  };
+  const auto bu = u.storage();
+  for (int k = bu.k0; k < bu.k1; ++k)
+    for (int i = bu.i0; i < bu.i1; ++i) {
+      if (i <= 0 || i >= spec.nx || k < 0 || k >= spec.nz || E.E_x(i, k) > 0.0) continue;
+      bool any = false;
+      const int b = covering(i - 1, k, i, k, any);
+      if (!any) continue;
+      u(i, k) = rigid(b, spec.position(Stagger::FaceX, i, k)).x;
+      u_valid(i, k) = 1;
+    }
+  const auto bw = w.storage();
+  for (int k = bw.k0; k < bw.k1; ++k)
+    for (int i = bw.i0; i < bw.i1; ++i) {
+      if (k <= 0 || k >= spec.nz || i < 0 || i >= spec.nx || E.E_z(i, k) > 0.0) continue;
+      bool any = false;
+      const int b = covering(i, k - 1, i, k, any);
+      if (!any) continue;
+      w(i, k) = rigid(b, spec.position(Stagger::FaceZ, i, k)).z;
+      w_valid(i, k) = 1;
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+
+namespace {
+
+// Nearest point to p on segment ab, and the solid's outward normal there (solid on the left).
+void nearest_on_segment(Vec2 p, Vec2 a, Vec2 b, Vec2& q, Vec2& n) {
+  const Vec2 ab = b - a;
+  const double L2 = core::norm2(ab);
+  const double t = L2 > 0 ? std::clamp(core::dot(p - a, ab) / L2, 0.0, 1.0) : 0.0;
+  q = a + t * ab;
+  n = L2 > 0 ? Vec2{ab.z, -ab.x} / std::sqrt(L2) : Vec2{0, 1};
+}
+
+void nearest_on_arc(Vec2 p, const geometry::Arc& arc, Vec2& q, Vec2& n) {
+  const Vec2 d = p - arc.centre;
+  double phi = std::atan2(d.z, d.x);
+  while (phi < arc.phi0) phi += 2 * M_PI;
+  while (phi > arc.phi0 + 2 * M_PI) phi -= 2 * M_PI;
+  if (phi > arc.phi1) {
+    // outside the arc's span: the nearer end
+    const Vec2 e0 = arc.centre + arc.radius * Vec2{std::cos(arc.phi0), std::sin(arc.phi0)};
+    const Vec2 e1 = arc.centre + arc.radius * Vec2{std::cos(arc.phi1), std::sin(arc.phi1)};
+    phi = core::norm2(p - e0) < core::norm2(p - e1) ? arc.phi0 : arc.phi1;
+  }
+  n = {std::cos(phi), std::sin(phi)};
+  q = arc.centre + arc.radius * n;
+}
+
+void nearest_on_boundary(Vec2 p, const std::vector<geometry::BoundaryPiece>& pieces, Vec2& best_q,
+                         Vec2& best_n) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const auto& piece : pieces) {
+    Vec2 q, n;
+    if (const auto* s = std::get_if<geometry::Segment>(&piece))
+      nearest_on_segment(p, s->a, s->b, q, n);
+    else
+      nearest_on_arc(p, std::get<geometry::Arc>(piece), q, n);
+    const double d2 = core::norm2(p - q);
+    if (d2 < best) best = d2, best_q = q, best_n = n;
+  }
+}
+
+bool in_polygon(Vec2 p, const std::vector<Vec2>& poly) {
+  bool in = false;
+  for (std::size_t a = 0, b = poly.size() - 1; a < poly.size(); b = a++) {
+    const Vec2 &pa = poly[a], &pb = poly[b];
+    if ((pa.z > p.z) != (pb.z > p.z) &&
+        p.x < (pb.x - pa.x) * (p.z - pa.z) / (pb.z - pa.z) + pa.x)
+      in = !in;
+  }
+  return in;
+}
+
+}  // namespace
+
+SolidLocator::SolidLocator(const SolidScene& scene) : scene_(scene) {
+  std::vector<core::Box2> boxes;
+  double rmax = 0.0;
+  for (const auto& pl : scene.placements) {
+    boxes.push_back(geometry::bounding_box(*pl.shape, pl.pose));
+    rmax = std::max(rmax, pl.shape->bounding_radius());
+  }
+  for (const auto& o : scene.obstacles)
+    for (const auto& poly : o.polygons) {
+      core::Box2 b{poly.front(), poly.front()};
+      for (const auto& v : poly) {
+        b.lo.x = std::min(b.lo.x, v.x), b.lo.z = std::min(b.lo.z, v.z);
+        b.hi.x = std::max(b.hi.x, v.x), b.hi.z = std::max(b.hi.z, v.z);
+      }
+      boxes.push_back(b);
+      obstacle_polys_.push_back(poly);
+    }
+  if (boxes.empty()) return;
+  core::Box2 all = boxes.front();
+  for (const auto& b : boxes) {
+    all.lo.x = std::min(all.lo.x, b.lo.x), all.lo.z = std::min(all.lo.z, b.lo.z);
+    all.hi.x = std::max(all.hi.x, b.hi.x), all.hi.z = std::max(all.hi.z, b.hi.z);
+  }
+  cell_ = std::max(2.0 * rmax, 1e-3 * std::max(all.hi.x - all.lo.x, all.hi.z - all.lo.z));
+  if (!(cell_ > 0)) cell_ = 1.0;
+  lo_ = all.lo;
+  nx_ = static_cast<int>((all.hi.x - all.lo.x) / cell_) + 1;
+  nz_ = static_cast<int>((all.hi.z - all.lo.z) / cell_) + 1;
+  buckets_.assign(static_cast<std::size_t>(nx_) * nz_, {});
+  for (std::size_t n = 0; n < boxes.size(); ++n) {
+    const int i0 = static_cast<int>((boxes[n].lo.x - lo_.x) / cell_);
+    const int i1 = std::min(nx_ - 1, static_cast<int>((boxes[n].hi.x - lo_.x) / cell_));
+    const int k0 = static_cast<int>((boxes[n].lo.z - lo_.z) / cell_);
+    const int k1 = std::min(nz_ - 1, static_cast<int>((boxes[n].hi.z - lo_.z) / cell_));
+    for (int k = k0; k <= k1; ++k)
+      for (int i = i0; i <= i1; ++i)
+        buckets_[static_cast<std::size_t>(k) * nx_ + i].push_back(static_cast<int>(n));
+  }
+}
+
+bool SolidLocator::inside(Vec2 p, Vec2* surface, Vec2* normal) const {
+  if (buckets_.empty()) return false;
+  const int i = static_cast<int>(std::floor((p.x - lo_.x) / cell_));
+  const int k = static_cast<int>(std::floor((p.z - lo_.z) / cell_));
+  if (i < 0 || k < 0 || i >= nx_ || k >= nz_) return false;
+  const std::size_t n_solids = scene_.placements.size();
+  for (int n : buckets_[static_cast<std::size_t>(k) * nx_ + i]) {
+    const auto un = static_cast<std::size_t>(n);
+    Vec2 q, nrm;
+    if (un < n_solids) {
+      const auto& pl = scene_.placements[un];
+      if (!pl.shape->contains(pl.pose.to_body(p))) continue;
+      if (surface || normal) nearest_on_boundary(p, geometry::world_boundary(*pl.shape, pl.pose), q, nrm);
+    } else {
+      const auto& poly = obstacle_polys_[un - n_solids];
+      if (!in_polygon(p, poly)) continue;
+      std::vector<geometry::BoundaryPiece> pieces;
+      for (std::size_t a = 0; a < poly.size(); ++a)
+        pieces.push_back(geometry::Segment{poly[a], poly[(a + 1) % poly.size()]});
+      if (surface || normal) nearest_on_boundary(p, pieces, q, nrm);
+    }
+    if (surface) *surface = q;
+    if (normal) *normal = nrm;
+    return true;
+  }
+  return false;
+}
+
+void push_out(particles::ParticleSet& ps, const SolidLocator& locator, double h) {
+  for (std::size_t n = 0; n < ps.x.size(); ++n) {
+    Vec2 p{ps.x[n], ps.z[n]}, q, nrm;
+    // A few passes: the nearest surface of one polygon of an obstacle may lie in another.
+    for (int pass = 0; pass < 3 && locator.inside(p, &q, &nrm); ++pass) p = q + 0.1 * h * nrm;
+    ps.x[n] = p.x, ps.z[n] = p.z;
+  }
+}
+
+std::vector<dem::Contact> all_contacts(const dem::DemSolver& dem, const core::Comm& comm) {
+  std::vector<double> mine;
+  for (const auto& c : dem.active_contacts())
+    mine.insert(mine.end(), {static_cast<double>(c.id_i), static_cast<double>(c.id_j), c.point.x,
+                             c.point.z, c.normal.x, c.normal.z, c.delta});
+  const auto all = comm.all_gather(mine);
+  std::vector<dem::Contact> out;
+  for (std::size_t n = 0; n + 7 <= all.size(); n += 7)
+    out.push_back({static_cast<std::int64_t>(all[n]), static_cast<std::int64_t>(all[n + 1]),
+                   {all[n + 2], all[n + 3]}, {all[n + 4], all[n + 5]}, all[n + 6]});
+  std::sort(out.begin(), out.end(), [](const dem::Contact& a, const dem::Contact& b) {
+    return std::tie(a.id_i, a.id_j, a.point.x, a.point.z) <
+           std::tie(b.id_i, b.id_j, b.point.x, b.point.z);
+  });
+  return out;
+}
+
+long long damp_gap_particles(particles::ParticleSet& ps, const std::vector<dem::Contact>& contacts,
+                             double h, double beta) {
+  if (contacts.empty() || beta >= 1.0) return 0;
+  long long damped = 0;
+  const double half_length = 2.0 * h;  // the band is 4h long
+  for (std::size_t n = 0; n < ps.x.size(); ++n) {
+    const Vec2 p{ps.x[n], ps.z[n]};
+    double C = 1.0;
+    for (const auto& c : contacts) {
+      if (!(c.delta > 0.0)) continue;
+      const Vec2 dp = p - c.point;
+      const double along = std::abs(core::dot(dp, core::perp(c.normal)));
+      const double across = std::abs(core::dot(dp, c.normal));
+      if (along >= half_length || across > h) continue;
+      // eq. 20: C falls linearly from 1 at the band's ends to beta at the contact point
+      C = std::min(C, beta + (1.0 - beta) * along / half_length);
+    }
+    if (C < 1.0) {
+      ps.u[n] *= C, ps.w[n] *= C;
+      ps.cxx[n] *= C, ps.cxz[n] *= C, ps.czx[n] *= C, ps.czz[n] *= C;
+      ++damped;
+    }
+  }
+  return damped;
+}
+
+}  // namespace picdem::coupling
