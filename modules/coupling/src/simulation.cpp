@@ -1,5 +1,7 @@
 #include "picdem/coupling/simulation.hpp"
 
+#include "simulation_state.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -26,43 +28,6 @@ using grid::CellState;
 using grid::FaceField;
 using grid::Stagger;
 
-struct SimulationState {
-  core::Comm comm;
-  core::Params params;
-  grid::GridSpec spec;
-  std::unique_ptr<grid::Decomposition> decomp;
-  std::unique_ptr<grid::Halo> halo;
-
-  // fluid
-  bool has_fluid = false;
-  fluid::FluidConfig fluid_cfg;
-  particles::ParticleConfig particle_cfg;
-  std::unique_ptr<fluid::PressureSolver> pressure;
-  particles::ParticleSet particles;
-  FaceField u, w, u_old, w_old, weight_u, weight_w;
-  grid::GridArray<signed char> u_valid, w_valid;
-  grid::CellField p;
-  fluid::CellStates cells;
-  grid::GridArray<int> count;
-  grid::CellField occupancy;  // S of free_surface.hpp
-  fluid::Apertures apertures;
-  double particle_mass = 0.0;  // per unit depth
-
-  // solids
-  std::vector<geometry::Obstacle> obstacles;
-  std::unique_ptr<dem::DemSolver> dem;
-  SolidScene scene;             // poses at the start of the step (cut cells)
-  geometry::CutCells cut;
-  std::vector<core::SolidLoads> collision_loads, fluid_loads;
-  double beta = 1.0;
-
-  // run
-  double t = 0.0, t_end = 0.0;
-  long long step = 0;
-  Diagnostics diag;
-  fluid::SolveStats last_solve;
-  std::unique_ptr<Output> output;
-};
 
 namespace {
 

@@ -1,0 +1,61 @@
+#pragma once
+// The state of a run, private to the coupling module: simulation.cpp advances it, checkpoint.cpp
+// writes and restores it. Everything a restart needs is listed in doc/restart.md.
+#include <memory>
+#include <vector>
+
+#include "picdem/core/comm.hpp"
+#include "picdem/core/params.hpp"
+#include "picdem/coupling/output.hpp"
+#include "picdem/coupling/simulation.hpp"
+#include "picdem/coupling/solids_in_fluid.hpp"
+#include "picdem/dem/dem_solver.hpp"
+#include "picdem/fluid/fluid.hpp"
+#include "picdem/fluid/pressure_solver.hpp"
+#include "picdem/geometry/cut_cells.hpp"
+#include "picdem/grid/field.hpp"
+#include "picdem/particles/particle_set.hpp"
+
+namespace picdem::coupling {
+
+using grid::FaceField;
+
+struct SimulationState {
+  core::Comm comm;
+  core::Params params;
+  grid::GridSpec spec;
+  std::unique_ptr<grid::Decomposition> decomp;
+  std::unique_ptr<grid::Halo> halo;
+
+  // fluid
+  bool has_fluid = false;
+  fluid::FluidConfig fluid_cfg;
+  particles::ParticleConfig particle_cfg;
+  std::unique_ptr<fluid::PressureSolver> pressure;
+  particles::ParticleSet particles;
+  FaceField u, w, u_old, w_old, weight_u, weight_w;
+  grid::GridArray<signed char> u_valid, w_valid;
+  grid::CellField p;
+  fluid::CellStates cells;
+  grid::GridArray<int> count;
+  grid::CellField occupancy;  // S of free_surface.hpp
+  fluid::Apertures apertures;
+  double particle_mass = 0.0;  // per unit depth
+
+  // solids
+  std::vector<geometry::Obstacle> obstacles;
+  std::unique_ptr<dem::DemSolver> dem;
+  SolidScene scene;             // poses at the start of the step (cut cells)
+  geometry::CutCells cut;
+  std::vector<core::SolidLoads> collision_loads, fluid_loads;
+  double beta = 1.0;
+
+  // run
+  double t = 0.0, t_end = 0.0;
+  long long step = 0;
+  Diagnostics diag;
+  fluid::SolveStats last_solve;
+  std::unique_ptr<Output> output;
+};
+
+}  // namespace picdem::coupling
