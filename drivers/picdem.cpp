@@ -89,8 +89,8 @@ int main(int argc, char** argv) {
       picdem::core::log(comm, args.case_file + ": valid");
       return 0;
     }
-    const std::string out =
-        args.output.empty() ? "output/" + params.string("case/name") : args.output;
+    std::string out = args.output.empty() ? params.string("output/directory") : args.output;
+    if (out.empty()) out = "output/" + params.string("case/name");
     picdem::core::log(comm, "picdem: case " + args.case_file + " on " +
                                 std::to_string(comm.size()) + " rank(s), output in " + out);
     picdem::coupling::Simulation sim(comm, params, out);

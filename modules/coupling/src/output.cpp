@@ -8,6 +8,7 @@
 #include "picdem/core/log.hpp"
 #include "picdem/core/timer.hpp"
 #include "picdem/dem/dem_solver.hpp"
+#include "picdem/geometry/obstacles.hpp"
 #include "picdem/geometry/outline.hpp"
 #include "picdem/io/csv_writer.hpp"
 #include "picdem/io/frame_writer.hpp"
@@ -53,7 +54,7 @@ void Output::frame(double t, long long step, const Diagnostics&, const particles
   if (!force && t < next_frame_ - 1e-12 * std::max(1.0, interval_)) return;
   char name[64];
   std::snprintf(name, sizeof name, "frame_%06lld.png", frames_);
-  write_frame(t, step, ps, p, cells, dem, obstacles, name);
+  write_frame(t, step, ps, p, cells, dem, obstacles, name, true);
   ++frames_;
   next_frame_ = interval_ * std::floor(t / interval_ + 1e-9) + interval_;
 }
@@ -62,7 +63,7 @@ void Output::write_frame(double t, long long step, const particles::ParticleSet&
                          const grid::CellField& p, const fluid::CellStates& cells,
                          const dem::DemSolver* dem,
                          const std::vector<geometry::Obstacle>& obstacles,
-                         const std::string& png_name) {
+                         const std::string& png_name, bool data) {
   core::ScopedTimer timer("output");
   const auto& spec = decomp_.spec();
   io::PointSet points;
@@ -85,19 +86,19 @@ void Output::write_frame(double t, long long step, const particles::ParticleSet&
       solid_lines.body_id.push_back(static_cast<double>(st.id));
     }
     for (const auto& st : dem->gather_all())
-      solids_->row({t, static_cast<double>(st.id), st.x.x, st.x.z, st.theta, st.v.x, st.v.z,
+      if (data)
+        solids_->row({t, static_cast<double>(st.id), st.x.x, st.x.z, st.theta, st.v.x, st.v.z,
                     st.omega});
   }
   // Fixed obstacles are known everywhere: rank 0 passes them.
   for (std::size_t o = 0; comm_.is_root() && o < obstacles.size(); ++o)
-    for (const auto& poly : obstacles[o].polygons) {
-      auto closed = poly;
-      if (!closed.empty()) closed.push_back(closed.front());
-      obstacle_lines.lines.push_back(closed);
+    for (const auto& line : geometry::outlines(obstacles[o])) {
+      obstacle_lines.lines.push_back(line);
       obstacle_lines.body_id.push_back(static_cast<double>(o));
     }
 
-  if (frames_writer_) {
+  if (data) last_frame_step_ = step;
+  if (frames_writer_ && data) {
     grid::CellField state(decomp_, grid::Stagger::Cell);
     const auto b = state.storage();
     for (int k = b.k0; k < b.k1; ++k)
@@ -117,7 +118,8 @@ void Output::write_frame(double t, long long step, const particles::ParticleSet&
 void Output::finish(double t, long long step, const Diagnostics&, const particles::ParticleSet& ps,
                     const grid::CellField& p, const fluid::CellStates& cells,
                     const dem::DemSolver* dem, const std::vector<geometry::Obstacle>& obstacles) {
-  write_frame(t, step, ps, p, cells, dem, obstacles, "final.png");
+  // The last state as final.png; its frame data unless the last frame already holds this step.
+  write_frame(t, step, ps, p, cells, dem, obstacles, "final.png", step != last_frame_step_);
   std::ostringstream table;
   core::summarize_timers(comm_, table);
   if (comm_.is_root()) std::ofstream(dir_ + "/timers.txt") << table.str();

@@ -22,6 +22,8 @@ void declare_parameters(core::ParamSchema& s) {
          "smallest time step [s]; a step below it stops the run as blown up").positive();
 
   s.section("output", "What the run writes, and how often.");
+  s.string("output/directory", "", {},
+           "output folder (empty: output/<case/name>); the command line's --output wins");
   s.real("output/interval", 0.05, "simulated time between frames (ParaView, PNG, solids.csv) [s]")
       .positive();
   s.boolean("output/paraview", true, "write XDMF + HDF5 frames");

@@ -44,7 +44,7 @@ class Output {
   void write_frame(double t, long long step, const particles::ParticleSet& ps,
                    const grid::CellField& p, const fluid::CellStates& cells,
                    const dem::DemSolver* dem, const std::vector<geometry::Obstacle>& obstacles,
-                   const std::string& png_name);
+                   const std::string& png_name, bool data);
 
   core::Comm comm_;
   core::Params params_;
@@ -52,6 +52,7 @@ class Output {
   std::string dir_;
   double interval_ = 0.0, next_frame_ = 0.0;
   long long frames_ = 0;
+  long long last_frame_step_ = -1;
   std::unique_ptr<io::FrameWriter> frames_writer_;
   std::unique_ptr<io::CsvWriter> timeseries_, solids_;
 };
