@@ -13,6 +13,11 @@ namespace {
 
 constexpr double two_pi = 6.283185307179586;
 
+/// |v| (sqrt of the square: hypot's overflow care is not needed at these scales and is slow)
+double length(const Vec2& v) {
+  return std::sqrt(core::norm2(v));
+}
+
 /// Angle of the direction d measured from phi0, in [0, 2 pi).
 double angle_from(double phi0, const Vec2& d) {
   double a = std::atan2(d.z, d.x) - phi0;
@@ -33,7 +38,7 @@ ClosestPoints make(const Vec2& p, const Vec2& q) {
   ClosestPoints c;
   c.on_a = p;
   c.on_b = q;
-  c.distance = core::norm(q - p);
+  c.distance = length(q - p);
   return c;
 }
 
@@ -86,8 +91,7 @@ ClosestPoints segment_segment(const Segment& s, const Segment& t) {
         c.end_a[e] = s.a + (e == 0 ? lo : hi) * r;
         c.end_b[e] = closest_on_segment(t, c.end_a[e]);
       }
-      const double d0 = core::norm(c.end_b[0] - c.end_a[0]),
-                   d1 = core::norm(c.end_b[1] - c.end_a[1]);
+      const double d0 = length(c.end_b[0] - c.end_a[0]), d1 = length(c.end_b[1] - c.end_a[1]);
       const int e = d0 <= d1 ? 0 : 1;
       c.on_a = c.end_a[e];
       c.on_b = c.end_b[e];
@@ -120,7 +124,7 @@ ClosestPoints segment_arc(const Segment& s, const Arc& a) {
 
 ClosestPoints arc_arc(const Arc& a, const Arc& b) {
   const Vec2 c = b.centre - a.centre;
-  const double d = core::norm(c);
+  const double d = length(c);
   ClosestPoints best;
   best.distance = std::numeric_limits<double>::infinity();
   if (d > 0.0) {
@@ -189,7 +193,7 @@ Vec2 closest_on_segment(const Segment& s, const Vec2& p) {
 
 Vec2 closest_on_arc(const Arc& a, const Vec2& p) {
   const Vec2 d = p - a.centre;
-  const double r = core::norm(d);
+  const double r = length(d);
   if (r > 0.0 && in_arc(a, d)) return a.centre + (a.radius / r) * d;
   const Vec2 p0 = arc_point(a, a.phi0), p1 = arc_point(a, a.phi1);
   if (r == 0.0) return p0;
@@ -220,7 +224,7 @@ void face_weighted(const ClosestPoints& cp, double gap, Vec2& on_a, Vec2& on_b) 
   if (!cp.face) return;
   double w[2], sum = 0.0;
   for (int e = 0; e < 2; ++e) {
-    w[e] = std::max(0.0, gap - core::norm(cp.end_b[e] - cp.end_a[e]));
+    w[e] = std::max(0.0, gap - length(cp.end_b[e] - cp.end_a[e]));
     sum += w[e];
   }
   if (sum <= 0.0) return;
@@ -254,7 +258,7 @@ bool is_centred_circle(const std::vector<BoundaryPiece>& boundary, double& radiu
   const auto* a = std::get_if<Arc>(&boundary.front());
   if (!a) return false;
   const double tol = 1e-12 * std::max(1.0, a->radius);
-  if (core::norm(a->centre) > tol || std::abs(a->phi1 - a->phi0 - two_pi) > 1e-9) return false;
+  if (length(a->centre) > tol || std::abs(a->phi1 - a->phi0 - two_pi) > 1e-9) return false;
   radius = a->radius;
   return true;
 }

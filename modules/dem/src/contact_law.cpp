@@ -4,19 +4,27 @@
 
 namespace picdem::dem {
 
-ContactCoefficients coefficients(const DemConfig& cfg, double m_ij) {
+ContactCoefficients unit_coefficients(const DemConfig& cfg) {
   // every coefficient is m_ij times a constant of the case
   const double k1 = cfg.g_stiffness / (cfg.theta * cfg.h);
-  ContactCoefficients k;
+  ContactCoefficients u;
   // eq. 10: k_xi = m_ij ||g|| / (theta dx)
-  k.k_n = m_ij * k1;
+  u.k_n = k1;
   // eq. 11: c_xi = 2 alpha sqrt(m_ij k_xi) = 2 alpha m_ij sqrt(||g|| / (theta dx))
-  k.c_n = m_ij * (2.0 * cfg.alpha * std::sqrt(k1));
+  u.c_n = 2.0 * cfg.alpha * std::sqrt(k1);
   // eq. 12: k_eta = k_xi / (2 (1 + psi))
-  k.k_t = m_ij * (k1 / (2.0 * (1.0 + cfg.psi)));
+  u.k_t = k1 / (2.0 * (1.0 + cfg.psi));
   // eq. 13: c_eta = c_xi / sqrt(2 (1 + psi))
-  k.c_t = m_ij * (2.0 * cfg.alpha * std::sqrt(k1) / std::sqrt(2.0 * (1.0 + cfg.psi)));
-  return k;
+  u.c_t = u.c_n / std::sqrt(2.0 * (1.0 + cfg.psi));
+  return u;
+}
+
+ContactCoefficients scaled(const ContactCoefficients& unit, double m_ij) {
+  return {m_ij * unit.k_n, m_ij * unit.c_n, m_ij * unit.k_t, m_ij * unit.c_t};
+}
+
+ContactCoefficients coefficients(const DemConfig& cfg, double m_ij) {
+  return scaled(unit_coefficients(cfg), m_ij);
 }
 
 double dem_time_step(const DemConfig& cfg) {

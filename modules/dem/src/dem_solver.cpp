@@ -75,6 +75,7 @@ DemSolver::DemSolver(core::Comm comm, DemConfig config, std::vector<core::Box2> 
     obstacle_boxes_.push_back(box);
   }
   dt_dem_ = dem_time_step(cfg_);
+  unit_ = unit_coefficients(cfg_);
   send_list_.resize(static_cast<std::size_t>(comm_.size()));
   recv_count_.assign(static_cast<std::size_t>(comm_.size()), 0);
 }
@@ -151,8 +152,9 @@ bool DemSolver::solid_pair(const SolidState& a, const SolidState& b, ContactKine
   const ShapeInfo& sb = shapes_[static_cast<std::size_t>(b.shape)];
   const double gap = cfg_.gap();
   const Vec2 c = b.x - a.x;
-  const double d = core::norm(c);
-  if (d - sa.radius - sb.radius >= gap) return false;
+  const double reach = sa.radius + sb.radius + gap, d2 = core::norm2(c);
+  if (d2 >= reach * reach) return false;
+  const double d = std::sqrt(d2);
   if (sa.circle && sb.circle) {
     // eq. 19: delta = r_i + r_j + 2 dx - d_ij
     const double delta = sa.radius + sb.radius + gap - d;
@@ -290,7 +292,7 @@ void DemSolver::collision_forces(double dt_t, Stage& out, std::vector<Springs>* 
     for (int side = 0; side < 4; ++side) {
       if (!wall_pair(s, side, kin)) continue;
       const std::int64_t key = wall_key(side);
-      const auto coef = coefficients(cfg_, s.mass);
+      const auto coef = scaled(unit_, s.mass);
       const auto cf = contact_force(cfg_, coef, kin, motion_of(s), fixed,
                                     accumulated ? spring_of(springs_[i], key) : 0.0, dt_t);
       add(kin, kin.arm_a, cf.force, key, cf.spring, -1, true);
@@ -298,7 +300,7 @@ void DemSolver::collision_forces(double dt_t, Stage& out, std::vector<Springs>* 
     for (std::size_t o = 0; o < obstacles_.size(); ++o) {
       if (!obstacle_pair(s, o, kin)) continue;
       const std::int64_t key = obstacle_key(o);
-      const auto coef = coefficients(cfg_, s.mass);
+      const auto coef = scaled(unit_, s.mass);
       const auto cf = contact_force(cfg_, coef, kin, motion_of(s), fixed,
                                     accumulated ? spring_of(springs_[i], key) : 0.0, dt_t);
       add(kin, kin.arm_a, cf.force, key, cf.spring, -1, true);
@@ -314,7 +316,7 @@ void DemSolver::collision_forces(double dt_t, Stage& out, std::vector<Springs>* 
       const SolidState& b = i_is_a ? p : s;
       if (!solid_pair(a, b, kin)) continue;
       // m_ij = (m_i + m_j) / 2
-      const auto coef = coefficients(cfg_, 0.5 * (a.mass + b.mass));
+      const auto coef = scaled(unit_, 0.5 * (a.mass + b.mass));
       const auto cf = contact_force(cfg_, coef, kin, motion_of(a), motion_of(b),
                                     accumulated ? spring_of(springs_[i], p.id) : 0.0, dt_t);
       add(kin, i_is_a ? kin.arm_a : kin.arm_b, i_is_a ? cf.force : -cf.force, p.id, cf.spring, p.id,

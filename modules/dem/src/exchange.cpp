@@ -247,7 +247,8 @@ void DemSolver::build_neighbours() {
           if (j == i) continue;
           const SolidState& p = at(j);
           const double Rj = shapes_[static_cast<std::size_t>(p.shape)].radius;
-          if (core::norm(p.x - s.x) < Ri + Rj + extra) cand.emplace_back(p.id, static_cast<int>(j));
+          const double reach = Ri + Rj + extra;
+          if (core::norm2(p.x - s.x) < reach * reach) cand.emplace_back(p.id, static_cast<int>(j));
         }
       }
     std::sort(cand.begin(), cand.end());
@@ -331,9 +332,13 @@ void DemSolver::restore(const Snapshot& snap) {
     s.v = {snap.u[n], snap.w[n]};
     s.omega = snap.omega[n];
     if (owner_of(s.x) != comm_.rank()) continue;
+    // springs are sorted by solid (as snapshot() writes them)
     Springs sp;
-    for (std::size_t e = 0; e < snap.spring_solid.size(); ++e)
-      if (snap.spring_solid[e] == s.id) sp.emplace_back(snap.spring_partner[e], snap.spring[e]);
+    auto e = static_cast<std::size_t>(
+        std::lower_bound(snap.spring_solid.begin(), snap.spring_solid.end(), s.id) -
+        snap.spring_solid.begin());
+    for (; e < snap.spring_solid.size() && snap.spring_solid[e] == s.id; ++e)
+      sp.emplace_back(snap.spring_partner[e], snap.spring[e]);
     owned_.push_back(s);
     springs_.push_back(std::move(sp));
     v_start_.push_back(s.v);

@@ -12,6 +12,10 @@ struct ContactCoefficients {
   double k_n = 0.0, c_n = 0.0, k_t = 0.0, c_t = 0.0;
 };
 ContactCoefficients coefficients(const DemConfig& cfg, double m_ij);
+/// The coefficients per unit m_ij (all four are proportional to m_ij) and their scaling:
+/// coefficients(cfg, m) == scaled(unit_coefficients(cfg), m), bit for bit.
+ContactCoefficients unit_coefficients(const DemConfig& cfg);
+ContactCoefficients scaled(const ContactCoefficients& unit, double m_ij);
 
 /// dt_DEM of eq. 18. With k_xi from eq. 10 it does not depend on the masses:
 /// 2 pi / gamma sqrt(m / k) = 2 pi / gamma sqrt(theta h / |g|).

@@ -31,6 +31,7 @@ class DemSolver {
  public:
   /// Every piece of history as plain arrays: the solids (ordered by id) and, for the
   /// accumulated tangential model, the springs of every active contact seen from each solid
+  /// (sorted by solid, then partner)
   /// (partner < 0: -1 - side for tank walls left, right, bottom, top; -5 - k for obstacle k).
   struct Snapshot {
     std::vector<std::int64_t> id;
@@ -121,6 +122,7 @@ class DemSolver {
   };
   std::vector<Statics> statics_;  // every solid, sorted by id
   const Statics& statics_of(std::int64_t id) const;
+  ContactCoefficients unit_;  // eqs. 10-13 per unit m_ij
   double max_radius_ = 0.0, skin_ = 0.0, dt_dem_ = 0.0;
   int last_subcycles_ = 0;
   long long rebuilds_ = 0;
