@@ -18,9 +18,12 @@ namespace picdem::coupling {
 namespace fs = std::filesystem;
 
 Output::Output(core::Comm comm, const core::Params& params, const grid::Decomposition& d,
-               std::string directory)
+               std::string directory, const Mark* resume, double resume_t)
     : comm_(comm), params_(params), decomp_(d), dir_(std::move(directory)),
       interval_(params.real("output/interval")) {
+  const bool append = resume != nullptr;
+  if (resume) next_frame_ = resume->next_frame, frames_ = resume->frames,
+              last_frame_step_ = resume->last_frame_step;
   if (comm_.is_root()) {
     fs::create_directories(dir_);
     fs::create_directories(dir_ + "/pictures");
@@ -28,15 +31,17 @@ Output::Output(core::Comm comm, const core::Params& params, const grid::Decompos
   }
   comm_.barrier();
   if (params_.boolean("output/paraview"))
-    frames_writer_ = std::make_unique<io::FrameWriter>(dir_, d);
+    frames_writer_ = std::make_unique<io::FrameWriter>(dir_, d, append);
   timeseries_ = std::make_unique<io::CsvWriter>(
       comm_, dir_ + "/timeseries.csv",
       std::vector<std::string>{"t", "dt", "step", "fluid_volume", "kinetic_energy",
                                "ppe_iterations", "ppe_residual", "front_x", "particles",
-                               "max_speed"});
+                               "max_speed"},
+      append, resume_t);
   solids_ = std::make_unique<io::CsvWriter>(
       comm_, dir_ + "/solids.csv",
-      std::vector<std::string>{"t", "id", "x", "z", "theta", "u", "w", "omega"});
+      std::vector<std::string>{"t", "id", "x", "z", "theta", "u", "w", "omega"}, append,
+      resume_t);
 }
 
 Output::~Output() = default;

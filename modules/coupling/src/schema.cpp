@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "picdem/coupling/checkpoint.hpp"
 #include "picdem/dem/parameters.hpp"
 #include "picdem/fluid/fluid.hpp"
 #include "picdem/geometry/obstacles.hpp"
@@ -88,6 +89,7 @@ core::ParamSchema case_schema() {
   particles::declare_parameters(s);
   geometry::declare_obstacle_parameters(s);
   dem::declare_parameters(s);
+  declare_checkpoint_parameters(s);
   return s;
 }
 

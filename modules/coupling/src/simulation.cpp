@@ -346,20 +346,114 @@ double Simulation::max_grid_speed() const {
   return s.comm.max(m);
 }
 
+std::vector<core::SolidState> Simulation::solids() const {
+  return s_->dem ? s_->dem->gather_all() : std::vector<core::SolidState>{};
+}
+
+double Simulation::surface_height(double x) const {
+  const SimulationState& s = *s_;
+  if (!s.has_fluid) return std::nan("");
+  int i, k;
+  s.spec.cell_of({x, s.spec.origin.z}, i, k);
+  const auto own = s.decomp->owned_cells();
+  double best = -std::numeric_limits<double>::infinity();
+  if (i >= own.i0 && i < own.i1)
+    for (int kk = own.k0; kk < own.k1; ++kk) {
+      const double below = s.occupancy(i, kk), above = s.occupancy(i, kk + 1);
+      if (kk + 1 >= s.spec.nz || !(below > 0.5) || above > 0.5) continue;
+      // S = 1/2 between the two centres, linearly
+      const double z0 = s.spec.position(Stagger::Cell, i, kk).z;
+      best = std::max(best, z0 + s.spec.h * (below - 0.5) / (below - above));
+    }
+  best = s.comm.max(best);
+  return std::isfinite(best) ? best : std::nan("");
+}
+
+double Simulation::max_contact_overlap() const {
+  const SimulationState& s = *s_;
+  double m = 0.0;
+  if (s.dem)
+    for (const auto& c : s.dem->active_contacts()) m = std::max(m, c.delta);
+  return s.comm.max(m);
+}
+
+std::vector<core::SolidLoads> Simulation::fluid_loads() const {
+  const SimulationState& s = *s_;
+  std::vector<double> mine;
+  for (const auto& l : s.fluid_loads)
+    mine.insert(mine.end(), {static_cast<double>(l.id), l.force.x, l.force.z, l.torque});
+  const auto all = s.comm.all_gather(mine);
+  std::vector<core::SolidLoads> out;
+  for (std::size_t n = 0; n + 4 <= all.size(); n += 4)
+    out.push_back({static_cast<std::int64_t>(all[n]), {all[n + 1], all[n + 2]}, all[n + 3]});
+  std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
+  return out;
+}
+
 void Simulation::run(long long max_steps) {
   SimulationState& s = *s_;
   core::Progress progress(s.comm, s.t, s.t_end, s.params.real("output/progress_seconds"));
-  if (s.output) s.output->frame(s.t, s.step, s.diag, s.particles, s.p, s.cells, s.dem.get(), s.obstacles, true);
+  if (s.output && !s.restarted)
+    s.output->frame(s.t, s.step, s.diag, s.particles, s.p, s.cells, s.dem.get(), s.obstacles, true);
+  const CheckpointConfig& ck = s.checkpoint;
+  double wall_last_checkpoint = core::wall_seconds();
+  long long last_checkpoint_step = s.restarted ? s.step : -1;
+  auto checkpoint = [&] {
+    Simulation::write_checkpoint(ck.directory + "/" + checkpoint_file_name(s.step));
+    prune_checkpoints(s.comm, ck.directory, ck.keep);
+    wall_last_checkpoint = core::wall_seconds();
+    last_checkpoint_step = s.step;
+  };
+  s.stopped_by_signal = false;
   while (s.t < s.t_end * (1.0 - 1e-12) && (max_steps <= 0 || s.step < max_steps)) {
     step();
+    check_step(s);
     if (s.output) {
       s.output->record(s.diag);
       s.output->frame(s.t, s.step, s.diag, s.particles, s.p, s.cells, s.dem.get(), s.obstacles, false);
     }
     progress.report(s.t, s.step, s.diag.dt, s.diag.ppe_iterations);
+    if (ck.directory.empty()) continue;
+    const bool stop = s.comm.any(stop_signal_received());
+    const bool by_steps = ck.every_steps > 0 && s.step % ck.every_steps == 0;
+    const bool by_time = ck.every_seconds > 0.0 &&
+                         s.comm.max(core::wall_seconds() - wall_last_checkpoint) >= ck.every_seconds;
+    if (stop || by_steps || by_time) checkpoint();
+    if (stop) {
+      core::log(s.comm, "picdem: stop signal: checkpoint written at step " +
+                            std::to_string(s.step) + ", stopping");
+      s.stopped_by_signal = true;
+      return;
+    }
   }
   progress.report(s.t, s.step, s.diag.dt, s.diag.ppe_iterations, true);
+  if (!ck.directory.empty() && ck.at_end && last_checkpoint_step != s.step) checkpoint();
   if (s.output) s.output->finish(s.t, s.step, s.diag, s.particles, s.p, s.cells, s.dem.get(), s.obstacles);
 }
+
+void Simulation::enable_checkpoints(const std::string& directory) {
+  SimulationState& s = *s_;
+  s.checkpoint = checkpoint_config_from(s.params, "");
+  s.checkpoint.directory = directory;
+  if (!directory.empty()) open_checkpoint_directory(s.comm, directory, !s.restarted);
+}
+
+void Simulation::restart_from(const std::string& checkpoint, const std::string& output_dir) {
+  SimulationState& s = *s_;
+  const Output::Mark mark = read_checkpoint(s, checkpoint);
+  s.restarted = true;
+  s.output.reset();
+  if (!output_dir.empty())
+    s.output = std::make_unique<Output>(s.comm, s.params, *s.decomp, output_dir, &mark, s.t);
+  core::log(s.comm, "picdem: restarted from " + checkpoint + " at step " + std::to_string(s.step) +
+                        ", t = " + std::to_string(s.t) + " s");
+}
+
+void Simulation::write_checkpoint(const std::string& path) const {
+  const SimulationState& s = *s_;
+  coupling::write_checkpoint(s, path, s.output ? s.output->mark() : Output::Mark{});
+}
+
+bool Simulation::stopped_by_signal() const { return s_->stopped_by_signal; }
 
 }  // namespace picdem::coupling

@@ -6,6 +6,7 @@
 
 #include "picdem/core/comm.hpp"
 #include "picdem/core/params.hpp"
+#include "picdem/coupling/checkpoint.hpp"
 #include "picdem/coupling/output.hpp"
 #include "picdem/coupling/simulation.hpp"
 #include "picdem/coupling/solids_in_fluid.hpp"
@@ -56,6 +57,11 @@ struct SimulationState {
   Diagnostics diag;
   fluid::SolveStats last_solve;
   std::unique_ptr<Output> output;
+
+  // checkpoints (checkpoint.hpp)
+  CheckpointConfig checkpoint;  // directory empty: no checkpoints
+  bool restarted = false;       // the state came from a checkpoint (no initial frame)
+  bool stopped_by_signal = false;
 };
 
 }  // namespace picdem::coupling

@@ -25,9 +25,20 @@ namespace picdem::coupling {
 
 class Output {
  public:
+  /// Where the frames stand, kept in checkpoints.
+  struct Mark {
+    double next_frame = 0.0;
+    long long frames = 0;
+    long long last_frame_step = -1;
+  };
+
+  /// `resume` (a restart at time `resume_t`): the CSV files and the frame index are continued
+  /// (rows and frames after resume_t dropped) and the frame count goes on from the mark.
   Output(core::Comm comm, const core::Params& params, const grid::Decomposition& d,
-         std::string directory);
+         std::string directory, const Mark* resume = nullptr, double resume_t = 0.0);
   ~Output();
+
+  Mark mark() const { return {next_frame_, frames_, last_frame_step_}; }
 
   /// One row of timeseries.csv.
   void record(const Diagnostics& diag);

@@ -3,6 +3,9 @@
 // the order of the paper's Fig. 4. Nothing here includes Trilinos or CGAL.
 #include <memory>
 #include <string>
+#include <vector>
+
+#include "picdem/core/solid_state.hpp"
 
 #include "picdem/core/comm.hpp"
 #include "picdem/core/params.hpp"
@@ -39,6 +42,18 @@ class Simulation {
   /// One coupled step.
   void step();
 
+  /// run() writes checkpoints to `directory` (checkpoint/every_steps, every_seconds, at_end, and
+  /// on SIGTERM / SIGUSR1, after which run() returns early); a fresh run first removes the old
+  /// checkpoints there. Empty: none.
+  void enable_checkpoints(const std::string& directory);
+  /// Collective: continues from a checkpoint file (checkpoint.hpp); `output_dir` non-empty: the
+  /// output there is continued. Throws core::InputError for a bad or mismatched file.
+  void restart_from(const std::string& checkpoint, const std::string& output_dir);
+  /// Collective: writes a checkpoint of the current state as `path`.
+  void write_checkpoint(const std::string& path) const;
+  /// True when the last run() stopped early on a stop signal.
+  bool stopped_by_signal() const;
+
   const Diagnostics& diagnostics() const;
   double time() const;
   long long step_count() const;
@@ -48,6 +63,16 @@ class Simulation {
   double pressure_at(double x, double z) const;
   /// Largest fluid speed on the grid faces next to fluid cells.
   double max_grid_speed() const;
+  /// Every solid, ordered by id, on every rank.
+  std::vector<core::SolidState> solids() const;
+  /// Height of the free surface (occupancy S = 1/2, free_surface.hpp) in the column holding x:
+  /// the highest crossing from fluid below to air above; NaN when the column holds no fluid.
+  double surface_height(double x) const;
+  /// Largest overlap delta of the imaginary boundaries over all active contacts (eq. 19); the
+  /// real boundaries of two bodies cross when it exceeds the gap (dem/gap_cells x h). 0 if none.
+  double max_contact_overlap() const;
+  /// The current collision and fluid loads on every solid (ordered by id), on every rank.
+  std::vector<core::SolidLoads> fluid_loads() const;
 
  private:
   std::unique_ptr<SimulationState> s_;

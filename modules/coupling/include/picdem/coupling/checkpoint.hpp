@@ -1,0 +1,79 @@
+#pragma once
+// Checkpoint / restart of a coupled run, and the checks that stop a blown-up run.
+//
+// A checkpoint is one parallel HDF5 file (io::CheckpointWriter: written collectively under
+// NAME.tmp, renamed when complete) holding the complete state of METHOD.md section 7, the
+// resolved case parameters, a format version and the code version. Its layout is in
+// doc/restart.md. Files are <directory>/checkpoint_<step, 8 digits>.h5; the newest `keep` stay.
+#include <string>
+#include <vector>
+
+#include "picdem/core/comm.hpp"
+#include "picdem/core/params.hpp"
+#include "picdem/coupling/output.hpp"
+
+namespace picdem::coupling {
+
+struct SimulationState;
+
+/// Version of the file layout; a file of another version is refused with a message.
+constexpr long long kCheckpointFormatVersion = 1;
+
+/// Declares checkpoint/every_steps, checkpoint/every_seconds, checkpoint/keep,
+/// checkpoint/directory, checkpoint/at_end.
+void declare_checkpoint_parameters(core::ParamSchema& schema);
+
+/// When and where checkpoints are written, read once from the validated case.
+struct CheckpointConfig {
+  long long every_steps = 0;   ///< 0: not by step count
+  double every_seconds = 0.0;  ///< wall-clock seconds between checkpoints; 0: not by time
+  int keep = 2;                ///< newest checkpoints kept in the directory
+  bool at_end = true;          ///< a checkpoint when the run reaches its end
+  std::string directory;       ///< resolved: checkpoint/directory or OUTPUT/checkpoints
+};
+/// `output_dir`: the run's output folder (the default directory is output_dir/checkpoints).
+CheckpointConfig checkpoint_config_from(const core::Params& params, const std::string& output_dir);
+
+/// "checkpoint_00000120.h5" for step 120.
+std::string checkpoint_file_name(long long step);
+/// The committed checkpoint of the highest step in `directory` (rank 0 looks, all ranks get it).
+/// Throws core::InputError when there is none.
+std::string latest_checkpoint(const core::Comm& comm, const std::string& directory);
+/// Removes all but the newest `keep` committed checkpoints of `directory` (rank 0).
+void prune_checkpoints(const core::Comm& comm, const std::string& directory, int keep);
+/// Creates `directory`; `fresh` (a new run, not a restart): removes its old checkpoints and
+/// left-over .tmp files, so `--restart latest` never picks a file of an earlier run.
+void open_checkpoint_directory(const core::Comm& comm, const std::string& directory, bool fresh);
+
+/// PROJECT_VERSION, plus `git describe` at configure time when it was available.
+std::string code_version();
+
+/// Keys allowed to differ between a checkpoint's case and the restarted case.
+bool key_may_change_on_restart(const std::string& path);
+/// The keys (outside key_may_change_on_restart) whose values differ between the two resolved
+/// cases, each as "key: stored -> current" ("(absent)" where one side lacks it).
+std::vector<std::string> case_differences(const std::string& stored_yaml,
+                                          const core::Params& current);
+
+/// SIGTERM and SIGUSR1 set a flag instead of killing the process: the run finishes its step,
+/// writes a checkpoint and exits 0 (how batch schedulers stop jobs).
+void install_stop_signal_handlers();
+/// True once SIGTERM or SIGUSR1 arrived on this process.
+bool stop_signal_received();
+
+// Used by Simulation (the state is private to the coupling module).
+
+/// Collective: writes the state to `path` (via path.tmp). Environment variable
+/// PICDEM_CHECKPOINT_PAUSE_AT_STEP=N (tests): at step N the writer stops for 60 s between the
+/// complete .tmp file and the rename, after printing "checkpoint paused before commit" on stderr.
+void write_checkpoint(const SimulationState& s, const std::string& path, const Output::Mark& mark);
+/// Collective: replaces the state by the checkpoint's (same or another rank count). Throws
+/// core::InputError for a missing, truncated, corrupted or mismatched file (format version, case).
+Output::Mark read_checkpoint(SimulationState& s, const std::string& path);
+
+/// Collective, after every step: throws core::SolverError naming the step when the step blew
+/// up: a particle moved more than 2 h (CFL far exceeded), or a solid's real boundary overlaps
+/// another solid, a wall or an obstacle (DEM overlap delta beyond the imaginary gap, eq. 19).
+void check_step(const SimulationState& s);
+
+}  // namespace picdem::coupling
