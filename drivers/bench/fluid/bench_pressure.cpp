@@ -3,7 +3,7 @@
 // several MueLu settings. With the argument "balanced" the tank is full to its top row instead,
 // so that every rank holds the same number of fluid cells. Prints unknowns, CG iterations to 1e-8
 // and setup / solve seconds (best of `repeats`). Run with 1 and 2 ranks:
-//   mpirun -n 2 build/drivers/bench/fluid/bench_pressure [balanced] [n ...]
+//   mpirun -n 2 build/drivers/bench/fluid/bench_pressure [balanced] [default] [n ...]
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -30,10 +30,12 @@ int main(int argc, char** argv) {
   fluid::LinearAlgebraScope scope(&argc, &argv);
   core::Comm comm;
   std::vector<int> sizes;
-  bool balanced = false;
+  bool balanced = false, only_default = false;
   for (int a = 1; a < argc; ++a) {
     if (std::string(argv[a]) == "balanced")
       balanced = true;
+    else if (std::string(argv[a]) == "default")
+      only_default = true;
     else
       sizes.push_back(std::atoi(argv[a]));
   }
@@ -56,6 +58,7 @@ int main(int argc, char** argv) {
                 "iter", "setup_s", "solve_s", "total_s");
   for (int n : sizes) {
     for (const auto& v : variants) {
+      if (only_default && &v != &variants.front()) continue;
       core::ParamSchema schema;
       grid::declare_parameters(schema);
       fluid::declare_parameters(schema);
