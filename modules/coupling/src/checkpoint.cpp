@@ -1,6 +1,7 @@
 #include "picdem/coupling/checkpoint.hpp"
 
 #include <Teuchos_ParameterList.hpp>
+#include <Teuchos_YamlParameterListCoreHelpers.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -156,7 +157,13 @@ void flatten(const Teuchos::ParameterList& list, const std::string& prefix,
 
 std::map<std::string, std::string> flat_case(const std::string& yaml, const std::string& source) {
   std::map<std::string, std::string> out;
-  flatten(*core::parse_yaml(yaml, source), "", out);
+  Teuchos::RCP<Teuchos::ParameterList> list;
+  try {
+    list = Teuchos::getParametersFromYamlString(yaml);
+  } catch (const std::exception& e) {
+    throw core::InputError(source + " is not readable YAML (corrupted): " + e.what());
+  }
+  flatten(*list, "", out);
   return out;
 }
 
