@@ -223,11 +223,41 @@ void divergence(const FaceField& u, const FaceField& w, const Apertures& E, cons
     }
 }
 
+SurfaceFractions surface_fractions(const grid::CellField& phi, const CellStates& cells,
+                                   const grid::Decomposition& d, double theta_min) {
+  SurfaceFractions t{FaceField(d, Stagger::FaceX, 1.0), FaceField(d, Stagger::FaceZ, 1.0)};
+  auto theta = [&](int ia, int ka, int ib, int kb) {
+    if (!cells.in_storage(ia, ka) || !cells.in_storage(ib, kb)) return 1.0;
+    const signed char a = cells(ia, ka), b = cells(ib, kb);
+    double pf, pa;
+    if (a == kFluid && b == kAir)
+      pf = phi(ia, ka), pa = phi(ib, kb);
+    else if (a == kAir && b == kFluid)
+      pf = phi(ib, kb), pa = phi(ia, ka);
+    else
+      return 1.0;
+    if (!(pa > pf)) return 1.0;
+    // theta = phi_fluid / (phi_fluid - phi_air): where phi crosses 0 between the two centres
+    return std::min(1.0, std::max(theta_min, pf / (pf - pa)));
+  };
+  const auto& bx = t.theta_x.storage();
+  for (int k = bx.k0; k < bx.k1; ++k)
+    for (int i = bx.i0; i < bx.i1; ++i) t.theta_x(i, k) = theta(i - 1, k, i, k);
+  const auto& bz = t.theta_z.storage();
+  for (int k = bz.k0; k < bz.k1; ++k)
+    for (int i = bz.i0; i < bz.i1; ++i) t.theta_z(i, k) = theta(i, k - 1, i, k);
+  return t;
+}
+
 void project(FaceField& u, FaceField& w, const grid::CellField& p, const CellStates& cells,
-             const Apertures& E, double dt, const FluidConfig& cfg) {
+             const Apertures& E, double dt, const FluidConfig& cfg,
+             const SurfaceFractions* surface) {
   core::ScopedTimer timer("fluid: project");
   if (cfg.h <= 0.0) throw core::InputError("fluid::project: FluidConfig::h must be the cell size");
   auto p_of = [&](int i, int k) { return cells(i, k) == kFluid ? p(i, k) : 0.0; };
+  // Ghost pressure of the air cell across a face of fraction theta: p = 0 at theta h from the
+  // fluid centre, so p_ghost = p_fluid (theta - 1) / theta.
+  auto ghost = [](double p_fluid, double theta) { return p_fluid * (theta - 1.0) / theta; };
   auto open = [&](signed char a, signed char b) {
     return a != kSolid && b != kSolid && (a == kFluid || b == kFluid);
   };
@@ -236,15 +266,25 @@ void project(FaceField& u, FaceField& w, const grid::CellField& p, const CellSta
   for (int k = bu.k0; k < bu.k1; ++k)
     for (int i = bu.i0; i < bu.i1; ++i) {
       if (E.E_x(i, k) <= 0.0 || !open(cells(i - 1, k), cells(i, k))) continue;
+      double pl = p_of(i - 1, k), pr = p_of(i, k);
+      if (surface && surface->theta_x(i, k) < 1.0) {
+        if (cells(i - 1, k) == kAir) pl = ghost(pr, surface->theta_x(i, k));
+        if (cells(i, k) == kAir) pr = ghost(pl, surface->theta_x(i, k));
+      }
       // u = u~ - dt/rho (p_{i} - p_{i-1}) / h
-      u(i, k) -= s * (p_of(i, k) - p_of(i - 1, k));
+      u(i, k) -= s * (pr - pl);
     }
   const auto& bw = w.owned();
   for (int k = bw.k0; k < bw.k1; ++k)
     for (int i = bw.i0; i < bw.i1; ++i) {
       if (E.E_z(i, k) <= 0.0 || !open(cells(i, k - 1), cells(i, k))) continue;
+      double pb = p_of(i, k - 1), pt = p_of(i, k);
+      if (surface && surface->theta_z(i, k) < 1.0) {
+        if (cells(i, k - 1) == kAir) pb = ghost(pt, surface->theta_z(i, k));
+        if (cells(i, k) == kAir) pt = ghost(pb, surface->theta_z(i, k));
+      }
       // w = w~ - dt/rho (p_{k} - p_{k-1}) / h
-      w(i, k) -= s * (p_of(i, k) - p_of(i, k - 1));
+      w(i, k) -= s * (pt - pb);
     }
 }
 

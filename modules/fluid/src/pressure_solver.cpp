@@ -79,7 +79,8 @@ PressureSolver::~PressureSolver() = default;
 AssembledSystem PressureSolver::assemble(const CellStates& cells, const Apertures& E,
                                          const grid::FaceField& u, const grid::FaceField& w,
                                          const std::vector<SolidCoupling>& couplings, double dt,
-                                         const FluidConfig& cfg) const {
+                                         const FluidConfig& cfg,
+                                         const SurfaceFractions* surface) const {
   core::ScopedTimer timer("fluid: pressure assembly");
   const grid::Decomposition& d = impl_->d;
   const grid::GridSpec& g = d.spec();
@@ -105,19 +106,24 @@ AssembledSystem PressureSolver::assemble(const CellStates& cells, const Aperture
       auto& row = sys.entries[static_cast<std::size_t>(r)];
       double diag = 0.0;
       const struct {
-        double E;
+        double E, theta;
         int i, k;
-      } faces[4] = {{E.E_x(i, k), i - 1, k},
-                    {E.E_x(i + 1, k), i + 1, k},
-                    {E.E_z(i, k), i, k - 1},
-                    {E.E_z(i, k + 1), i, k + 1}};
+      } faces[4] = {{E.E_x(i, k), surface ? surface->theta_x(i, k) : 1.0, i - 1, k},
+                    {E.E_x(i + 1, k), surface ? surface->theta_x(i + 1, k) : 1.0, i + 1, k},
+                    {E.E_z(i, k), surface ? surface->theta_z(i, k) : 1.0, i, k - 1},
+                    {E.E_z(i, k + 1), surface ? surface->theta_z(i, k + 1) : 1.0, i, k + 1}};
       for (const auto& f : faces) {
         if (f.E <= 0.0 || f.i < 0 || f.k < 0 || f.i >= g.nx || f.k >= g.nz) continue;
         const signed char nb = cells(f.i, f.k);
         if (nb == kSolid) continue;
         // -L_E: diagonal sum_f E_f dt/(rho h); fluid neighbour -E_f dt/(rho h); air: p = 0
-        diag += f.E * s;
-        if (nb == kFluid) row.emplace_back(g.cell_gid(f.i, f.k), -f.E * s);
+        // at theta h (theta = 1: the air cell's centre), diagonal E_f dt/(rho h theta)
+        if (nb == kFluid) {
+          diag += f.E * s;
+          row.emplace_back(g.cell_gid(f.i, f.k), -f.E * s);
+        } else {
+          diag += f.E * s / f.theta;
+        }
       }
       row.emplace_back(g.cell_gid(i, k), diag);
       // b = -D(u~)  (eq. 5 with the sign of -L_E)
@@ -385,9 +391,10 @@ SolveStats run_solver(const grid::Decomposition& d, const SolverSettings& settin
 SolveStats PressureSolver::solve(const CellStates& cells, const Apertures& E,
                                  const grid::FaceField& u, const grid::FaceField& w,
                                  const std::vector<SolidCoupling>& couplings, double dt,
-                                 const FluidConfig& cfg, grid::CellField& p) {
+                                 const FluidConfig& cfg, grid::CellField& p,
+                                 const SurfaceFractions* surface) {
   const auto t0 = std::chrono::steady_clock::now();
-  const AssembledSystem sys = assemble(cells, E, u, w, couplings, dt, cfg);
+  const AssembledSystem sys = assemble(cells, E, u, w, couplings, dt, cfg, surface);
   const double assembly = seconds_since(t0);
   const grid::GridSpec& g = impl_->d.spec();
   std::vector<double> x(sys.rows.size());

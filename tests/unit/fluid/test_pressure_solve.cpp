@@ -215,3 +215,50 @@ TEST(PressureSolve, RejectedMueLuSettingsNameTheKey) {
     EXPECT_NE(std::string(e.what()).find("solver/MueLu"), std::string::npos) << e.what();
   }
 }
+
+// Sub-cell free surface at z_s = 20.3 h (level set phi = z - z_s): the ghost-fluid Dirichlet
+// condition makes the hydrostatic pressure exact at every cell centre, p = rho g (z_s - z_c),
+// including the top fluid row (theta = 0.8), and the projected water stays at rest.
+TEST(PressureSolve, SubCellSurfaceIsHydrostaticAtTheTrueSurface) {
+  core::Comm comm;
+  const auto params = fluid_test::tank_params(0.64, 0.32, 0.01, {"solver/tolerance=1e-12"});
+  const GridSpec s = spec_from(params);
+  Decomposition d(s, comm, 1);
+  Halo halo(d);
+  const double zs = 20.3 * s.h;
+  fluid::CellStates cells(d, Stagger::Cell, kAir);
+  CellField phi(d, Stagger::Cell, 1.0);
+  const auto& cb = cells.storage();
+  for (int k = cb.k0; k < cb.k1; ++k)
+    for (int i = cb.i0; i < cb.i1; ++i) {
+      phi(i, k) = s.position(Stagger::Cell, i, k).z - zs;
+      if (i >= 0 && i < s.nx && k >= 0 && phi(i, k) < 0.0) cells(i, k) = kFluid;
+    }
+  const auto surface = fluid::surface_fractions(phi, cells, d);
+  if (surface.theta_z.owned().contains(3, 20)) {
+    EXPECT_NEAR(surface.theta_z(3, 20), 0.8, 1e-12);
+  }
+  const auto E = fluid::open_apertures(d);
+  FaceField u(d, Stagger::FaceX, 0.0), w(d, Stagger::FaceZ, 0.0);
+  const auto cfg = fluid::config_from(params);
+  const double dt = 0.005;
+  fluid::apply_gravity(u, w, cells, dt, cfg);
+  halo.forward(u), halo.forward(w);
+  fluid::enforce_walls(u, w, cfg, d);
+  CellField p(d, Stagger::Cell, 0.0);
+  fluid::PressureSolver solver(d, params);
+  solver.solve(cells, E, u, w, {}, dt, cfg, p, &surface);
+  fluid::project(u, w, p, cells, E, dt, cfg, &surface);
+  double perr = 0.0, wmax = 0.0;
+  for (int k = cells.owned().k0; k < cells.owned().k1; ++k)
+    for (int i = cells.owned().i0; i < cells.owned().i1; ++i)
+      if (cells(i, k) == kFluid) {
+        const double exact = 1000.0 * 9.81 * (zs - s.position(Stagger::Cell, i, k).z);
+        perr = std::max(perr, std::abs(p(i, k) / exact - 1.0));
+      }
+  for (int k = w.owned().k0; k < w.owned().k1; ++k)
+    for (int i = w.owned().i0; i < w.owned().i1; ++i)
+      if (k <= 20) wmax = std::max(wmax, std::abs(w(i, k)));
+  EXPECT_LT(comm.max(perr), 1e-9);
+  EXPECT_LT(comm.max(wmax), 1e-9 * 9.81 * dt);
+}

@@ -49,6 +49,18 @@ struct Apertures {
 /// E = h on every interior face, 0 on the tank's outer faces (the walls), over owned + halo.
 Apertures open_apertures(const grid::Decomposition& d);
 
+/// Sub-cell free surface (ghost fluid): on a face between a fluid and an air cell, the fraction
+/// theta in (0, 1] of the centre-to-centre distance that lies in the fluid; p = 0 is imposed at
+/// that distance instead of at the air cell's centre. 1 on every other face.
+struct SurfaceFractions {
+  grid::FaceField theta_x, theta_z;
+};
+/// theta = phi_fluid / (phi_fluid - phi_air) from a cell-centred level set phi (< 0 in fluid),
+/// clamped to [theta_min, 1], over the storage faces whose two cells are in storage. phi and
+/// cells need a current halo.
+SurfaceFractions surface_fractions(const grid::CellField& phi, const CellStates& cells,
+                                   const grid::Decomposition& d, double theta_min = 0.01);
+
 /// Adds dt g to every owned face next to a fluid cell (cells' halo must be current). Faces on the
 /// tank walls are included: call enforce_walls afterwards, as the step does before the solve.
 void apply_gravity(grid::FaceField& u, grid::FaceField& w, const CellStates& cells, double dt,
@@ -72,9 +84,12 @@ void divergence(const grid::FaceField& u, const grid::FaceField& w, const Apertu
                 const CellStates& cells, grid::CellField& D);
 
 /// u -= dt/rho (p_right - p_left)/h on owned open faces (E > 0, not on the walls) next to a fluid
-/// cell and not next to a solid cell; p = 0 in air cells (eq. 3). p's halo must be current.
+/// cell and not next to a solid cell; p = 0 in air cells (eq. 3), or, with `surface`, at the
+/// fraction theta of the way to the air cell (the same surface as passed to the solve). p's halo
+/// must be current.
 void project(grid::FaceField& u, grid::FaceField& w, const grid::CellField& p,
-             const CellStates& cells, const Apertures& E, double dt, const FluidConfig& cfg);
+             const CellStates& cells, const Apertures& E, double dt, const FluidConfig& cfg,
+             const SurfaceFractions* surface = nullptr);
 
 /// Faces that carry fluid velocity: interior faces next to a fluid cell, with E > 0 (1), else 0.
 void fluid_faces(const CellStates& cells, const Apertures& E, grid::GridArray<signed char>& u_valid,

@@ -60,15 +60,19 @@ class PressureSolver {
   /// Assembles and solves; p holds the initial guess on entry (previous pressure) and the
   /// solution on exit: owned fluid cells solved, owned non-fluid cells 0, halo forwarded.
   /// `cells` must have a current halo. Throws core::SolverError naming the residual reached
-  /// when the relative true residual stays above solver/tolerance.
+  /// when the relative true residual stays above solver/tolerance. With `surface`, an air
+  /// neighbour across a face of fraction theta adds E dt/(rho h theta) to the diagonal (p = 0
+  /// at the sub-cell surface); pass the same surface to project().
   SolveStats solve(const CellStates& cells, const Apertures& E, const grid::FaceField& u,
                    const grid::FaceField& w, const std::vector<SolidCoupling>& couplings, double dt,
-                   const FluidConfig& cfg, grid::CellField& p);
+                   const FluidConfig& cfg, grid::CellField& p,
+                   const SurfaceFractions* surface = nullptr);
 
   /// The same assembly as solve(), returned as plain arrays instead of solved.
   AssembledSystem assemble(const CellStates& cells, const Apertures& E, const grid::FaceField& u,
                            const grid::FaceField& w, const std::vector<SolidCoupling>& couplings,
-                           double dt, const FluidConfig& cfg) const;
+                           double dt, const FluidConfig& cfg,
+                           const SurfaceFractions* surface = nullptr) const;
 
  private:
   struct Impl;
