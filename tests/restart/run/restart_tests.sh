@@ -1,0 +1,194 @@
+#!/usr/bin/env bash
+# Restart tests of the picdem executable (doc/restart.md). Each test runs in its own folder.
+# usage: restart_tests.sh PICDEM SOURCE_DIR WORK_DIR PYTHON TEST [TEST ARGS] -- MPIEXEC...
+#   TEST: bitwise N CASE | ranks N M | kill_during_write | sigterm | sigusr1 | bad_files | blow_up
+set -u
+picdem=$1 src=$2 work=$3 python=$4 test=$5
+shift 5
+targs=()
+while [ $# -gt 0 ] && [ "$1" != "--" ]; do targs+=("$1"); shift; done
+shift
+mpi=("$@")
+cmp="$python $src/tests/restart/run/compare_checkpoints.py"
+fail() { echo "FAIL: $*"; exit 1; }
+ck() { printf '%s/checkpoints/checkpoint_%08d.h5' "$1" "$2"; }
+
+# run N DIR ARGS...: picdem on N ranks (exit code checked by the caller).
+run() {
+  local n=$1 dir=$2
+  shift 2
+  timeout 300 "${mpi[@]}" -n "$n" "$picdem" "$@" -o "$dir" > "$dir.log" 2>&1
+}
+expect_ok() { [ "$1" -eq 0 ] || { tail -20 "$2.log"; fail "$2: exit code $1"; }; }
+
+floating_disk=(cases/floating_disk/case.yaml --set grid/cell_size=0.002 --set output/png=false
+               --set output/interval=0.005)
+disks=(tests/restart/run/disks_in_water.yaml)
+case_args() {  # name -> the case file and its overrides
+  if [ "$1" = floating_disk ]; then echo "${floating_disk[@]}"; else echo "${disks[@]}"; fi
+}
+
+rm -rf "$work" && mkdir -p "$work" && cd "$src" || exit 1
+W=$work
+
+case $test in
+bitwise)
+  # Restart == continuous run, bitwise, on N ranks: every dataset of the state at the end, and the
+  # output the restarted run continued (time series, solids, frame index) byte for byte.
+  n=${targs[0]}
+  read -r -a c <<< "$(case_args "${targs[1]}")"
+  every=(--set checkpoint/every_steps=20 --set checkpoint/keep=5)
+  run "$n" "$W/A" "${c[@]}" "${every[@]}" --max-steps 40; expect_ok $? "$W/A"
+  run "$n" "$W/B" "${c[@]}" "${every[@]}" --max-steps 30; expect_ok $? "$W/B"
+  [ -f "$(ck "$W/B" 30)" ] || fail "no checkpoint at the end of the interrupted run"
+  run "$n" "$W/B" "${c[@]}" "${every[@]}" --max-steps 40 --restart "$(ck "$W/B" 20)"
+  expect_ok $? "$W/B"
+  $cmp "$(ck "$W/A" 40)" "$(ck "$W/B" 40)" bitwise || fail "the state after restart differs"
+  for f in timeseries.csv solids.csv picdem.xdmf; do
+    cmp "$W/A/$f" "$W/B/$f" || fail "$f differs after restart"
+  done
+  echo "restart == continuous run, bitwise, on $n rank(s): state and output identical"
+  ;;
+ranks)
+  # N -> M: a checkpoint written on N ranks continued on M ranks stays within the linear solver
+  # tolerance of the uninterrupted N-rank run over 20 steps.
+  n=${targs[0]} m=${targs[1]}
+  every=(--set checkpoint/every_steps=20 --set checkpoint/keep=5)
+  run "$n" "$W/A" "${disks[@]}" "${every[@]}" --max-steps 40; expect_ok $? "$W/A"
+  run "$m" "$W/B" "${disks[@]}" "${every[@]}" --max-steps 40 --restart "$(ck "$W/A" 20)"
+  expect_ok $? "$W/B"
+  # positions/velocities within 1e-5 (m, m/s), pressure within 1e-5 of its largest value
+  $cmp "$(ck "$W/A" 40)" "$(ck "$W/B" 40)" close 1e-5 1e-5 || fail "$n -> $m ranks: not close"
+  ;;
+kill_during_write)
+  # SIGKILL while the checkpoint of step 40 is being written (the writer pauses between the
+  # complete .tmp and the rename): step 20's checkpoint survives, the run restarts from it and
+  # ends with the state of an uninterrupted run.
+  read -r -a c <<< "$(case_args floating_disk)"
+  every=(--set checkpoint/every_steps=20 --set checkpoint/keep=5)
+  "$picdem" "${c[@]}" "${every[@]}" --max-steps 60 -o "$W/A" > "$W/A.log" 2>&1 ||
+    fail "uninterrupted run failed"
+  PICDEM_CHECKPOINT_PAUSE_AT_STEP=40 "$picdem" "${c[@]}" "${every[@]}" --max-steps 60 \
+    -o "$W/B" > "$W/B.log" 2>&1 &
+  pid=$!
+  for _ in $(seq 600); do
+    grep -q "checkpoint paused before commit" "$W/B.log" && break
+    sleep 0.1
+  done
+  grep -q "checkpoint paused before commit" "$W/B.log" || { kill -9 $pid; fail "no pause seen"; }
+  kill -9 $pid
+  wait $pid 2> /dev/null
+  [ -f "$(ck "$W/B" 40).tmp" ] || fail "no partial checkpoint_00000040.h5.tmp left by the kill"
+  [ -f "$(ck "$W/B" 40)" ] && fail "a checkpoint of step 40 was committed before the kill"
+  [ -f "$(ck "$W/B" 20)" ] || fail "the previous checkpoint (step 20) is gone"
+  "$picdem" "${c[@]}" "${every[@]}" --max-steps 60 --restart latest -o "$W/B" > "$W/B2.log" 2>&1 ||
+    fail "restart after the kill failed: $(tail -3 "$W/B2.log")"
+  grep -q "restarted from .*checkpoint_00000020.h5" "$W/B2.log" || fail "did not restart from step 20"
+  $cmp "$(ck "$W/A" 60)" "$(ck "$W/B" 60)" bitwise || fail "state after the kill and restart differs"
+  cmp "$W/A/timeseries.csv" "$W/B/timeseries.csv" || fail "timeseries.csv differs"
+  ;;
+sigterm | sigusr1)
+  # A stop signal mid-run: the step finishes, a checkpoint is written, exit code 0; the run
+  # continued from it ends bitwise equal to an uninterrupted run. SIGTERM goes to the process
+  # (1 rank), SIGUSR1 through mpirun to 2 ranks (Open MPI forwards it).
+  read -r -a c <<< "$(case_args floating_disk)"
+  quiet=(--set output/progress_seconds=0 --set checkpoint/at_end=true)
+  if [ "$test" = sigterm ]; then n=1 sig=TERM; launch=(); else n=2 sig=USR1 launch=("${mpi[@]}" -n 2); fi
+  "${launch[@]}" "$picdem" "${c[@]}" "${quiet[@]}" --max-steps 80 -o "$W/A" > "$W/A.log" 2>&1 ||
+    fail "uninterrupted run failed"
+  "${launch[@]}" "$picdem" "${c[@]}" "${quiet[@]}" --max-steps 80 -o "$W/B" > "$W/B.log" 2>&1 &
+  pid=$!
+  for _ in $(seq 1200); do
+    grep -q "step 10 " "$W/B.log" && break
+    sleep 0.05
+  done
+  kill -$sig $pid
+  wait $pid
+  code=$?
+  [ $code -eq 0 ] || fail "exit code $code after SIG$sig (expected 0): $(tail -3 "$W/B.log")"
+  grep -q "stop signal: checkpoint written at step" "$W/B.log" || fail "no checkpoint on SIG$sig"
+  stop=$(sed -n 's/.*checkpoint written at step \([0-9]*\).*/\1/p' "$W/B.log")
+  [ "$stop" -lt 80 ] || fail "the signal arrived too late (step $stop)"
+  "${launch[@]}" "$picdem" "${c[@]}" "${quiet[@]}" --max-steps 80 --restart latest -o "$W/B" \
+    > "$W/B2.log" 2>&1 || fail "restart failed: $(tail -3 "$W/B2.log")"
+  $cmp "$(ck "$W/A" 80)" "$(ck "$W/B" 80)" bitwise || fail "state differs after SIG$sig at $stop"
+  cmp "$W/A/timeseries.csv" "$W/B/timeseries.csv" || fail "timeseries.csv differs"
+  echo "SIG$sig at step $stop: continued run identical to the uninterrupted one"
+  ;;
+bad_files)
+  # Each bad checkpoint stops the run with exit code 2 and its own message.
+  read -r -a c <<< "$(case_args floating_disk)"
+  "$picdem" "${c[@]}" --max-steps 5 -o "$W/A" > "$W/A.log" 2>&1 || fail "run failed"
+  good=$(ck "$W/A" 5)
+  [ -f "$good" ] || fail "no checkpoint at the end"
+  check() {  # name, expected text, file, extra args...
+    local name=$1 expect=$2 file=$3
+    shift 3
+    out=$(timeout 120 "$picdem" "${c[@]}" --max-steps 6 --restart "$file" "$@" -o "$W/$name" 2>&1)
+    code=$?
+    [ $code -eq 2 ] || fail "$name: exit code $code, expected 2: $(echo "$out" | tail -3)"
+    grep -qF -- "$expect" <<< "$out" || fail "$name: message lacks '$expect': $out"
+    echo "$name: $(grep -F -- "$expect" <<< "$out" | head -1)"
+  }
+  cp "$good" "$W/truncated.h5" && truncate -s $(($(stat -c %s "$good") / 2)) "$W/truncated.h5"
+  check truncated "truncated" "$W/truncated.h5"
+  cp "$good" "$W/corrupted.h5"
+  $python - "$W/corrupted.h5" << 'EOF' || fail "cannot corrupt the file"
+import sys, h5py
+with h5py.File(sys.argv[1], "r") as f:
+    offset = f["particles/u"].id.get_offset()
+with open(sys.argv[1], "r+b") as f:
+    f.seek(offset + 800)
+    f.write(b"\x7f" * 16)
+EOF
+  check corrupted "fails its checksum (corrupted)" "$W/corrupted.h5"
+  cp "$good" "$W/version.h5"
+  $python -c "import h5py,sys; f=h5py.File(sys.argv[1],'r+'); f.attrs['format_version']=99; f.close()" \
+    "$W/version.h5" || fail "cannot change the version"
+  check other_version "has format version 99" "$W/version.h5"
+  check other_case "belongs to another case; these keys differ" "$good" --set fluid/density=1100
+  check other_case_key "fluid/density: 1000" "$good" --set fluid/density=1100
+  check missing "does not exist" "$W/no_such_checkpoint.h5"
+  check no_latest "no checkpoint (checkpoint_*.h5) in" latest --set checkpoint/directory="$W/empty"
+  # allowed to differ: time/end, output/*, checkpoint/*, solver/*
+  "$picdem" "${c[@]}" --max-steps 6 --restart "$good" --set time/end=2 --set solver/tolerance=1e-9 \
+    -o "$W/allowed" > "$W/allowed.log" 2>&1 || fail "restart with allowed changes failed"
+  ;;
+blow_up)
+  # A dam break with a time step far beyond the CFL limit: the run stops with exit code 3 and a
+  # message naming the step; the checkpoints left are those of good steps, and the newest loads.
+  bad=(cases/dam_break/case.yaml --set grid/cell_size=0.004 --set output/png=false
+       --set time/cfl=5 --set time/dt_max=0.02 --set checkpoint/every_steps=1
+       --set checkpoint/keep=3)
+  run 1 "$W/A" "${bad[@]}" --max-steps 100
+  code=$?
+  [ $code -eq 3 ] || fail "exit code $code, expected 3: $(tail -3 "$W/A.log")"
+  grep -q "the run stopped: step [0-9]* at t = .*CFL condition is far exceeded" "$W/A.log" ||
+    fail "no CFL diagnostic: $(tail -3 "$W/A.log")"
+  step=$(sed -n 's/.*the run stopped: step \([0-9]*\) at t.*/\1/p' "$W/A.log")
+  last=$(ls "$W/A/checkpoints" | sed -n 's/checkpoint_0*\([0-9]*\)\.h5$/\1/p' | sort -n | tail -1)
+  [ "$last" = $((step - 1)) ] || fail "newest checkpoint is of step $last, blown step $step"
+  run 1 "$W/B" "${bad[@]}" --max-steps $((step - 1)) --restart latest \
+    --set checkpoint/directory="$W/A/checkpoints"
+  expect_ok $? "$W/B"
+  echo "blown up at step $step, last good checkpoint of step $last loads"
+  # Two disks whose real boundaries overlap: stopped at the first step, naming both solids.
+  cat > "$W/overlap.yaml" << 'EOF'
+grid: {length: 0.1, height: 0.1, cell_size: 0.002}
+solids:
+  a: {type: disk, radius: 0.01, center: [0.05, 0.05], density: 1000.0}
+  b: {type: disk, radius: 0.01, center: [0.06, 0.05], density: 1000.0}
+time: {end: 0.1}
+output: {png: false}
+EOF
+  run 1 "$W/C" "$W/overlap.yaml" --max-steps 5
+  code=$?
+  [ $code -eq 3 ] || fail "overlap: exit code $code, expected 3: $(tail -3 "$W/C.log")"
+  grep -q "the run stopped: step 1 at t = .*solid 0 lies inside solid 1" "$W/C.log" ||
+    fail "no overlap diagnostic: $(tail -3 "$W/C.log")"
+  ;;
+*)
+  fail "unknown test $test"
+  ;;
+esac
+echo "PASS $test"
