@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 #include <mpi.h>
 
+#include <algorithm>
+
 #include "../../validation/dem/dry_collapse_run.hpp"
 
 using namespace picdem;
@@ -13,13 +15,16 @@ using namespace picdem::dem::testing;
 
 namespace {
 
+/// solids.csv text; `contacts` gets the number of active contacts over all ranks at each output.
 std::string solids_csv(const core::Comm& comm, const CollapseCase& c,
                        std::vector<core::Box2> regions,
-                       std::vector<long long>* owned_counts = nullptr) {
+                       std::vector<long long>* owned_counts = nullptr,
+                       std::vector<long long>* contacts = nullptr) {
   std::string csv = "t,id,x,z,theta,u,w,omega\n";
   run_collapse(comm, c, std::move(regions), [&](double t, const DemSolver& s) {
     append_solids_csv(csv, t, s.gather_all());
     if (owned_counts) owned_counts->push_back(static_cast<long long>(s.owned().size()));
+    if (contacts) contacts->push_back(comm.sum(static_cast<long long>(s.active_contacts().size())));
   });
   return csv;
 }
@@ -49,8 +54,8 @@ TEST_P(RankInvariance, SolidsCsvIdenticalToOneRank) {
   const std::vector<double> cuts =
       world.size() == 2 ? std::vector<double>{0.03} : std::vector<double>{0.025, 0.045};
   ASSERT_EQ(cuts.size() + 1, static_cast<std::size_t>(world.size()));
-  std::vector<long long> counts;
-  const std::string parallel = solids_csv(world, c, strips(c.tank, cuts), &counts);
+  std::vector<long long> counts, contacts;
+  const std::string parallel = solids_csv(world, c, strips(c.tank, cuts), &counts, &contacts);
   // every rank owned solids at some output, and the total is always 33
   long long most = 0;
   for (long long n : counts) most = std::max(most, n);
@@ -62,7 +67,11 @@ TEST_P(RankInvariance, SolidsCsvIdenticalToOneRank) {
     const core::Comm self(MPI_COMM_SELF);
     const CollapseCase c1 =
         load_collapse(self, {"dem/tangential_model=" + GetParam(), "time/end=0.3"});
-    const std::string serial = solids_csv(self, c1, strips(c1.tank, {}));
+    std::vector<long long> serial_contacts;
+    const std::string serial = solids_csv(self, c1, strips(c1.tank, {}), nullptr, &serial_contacts);
+    // each active contact is reported once over all ranks
+    EXPECT_EQ(contacts, serial_contacts);
+    EXPECT_GT(*std::max_element(serial_contacts.begin(), serial_contacts.end()), 20);
     EXPECT_GT(serial.size(), 30000u);
     EXPECT_TRUE(parallel == serial) << "strip regions: solids.csv differs from one rank";
     EXPECT_TRUE(by_grid == serial) << "grid regions: solids.csv differs from one rank";
