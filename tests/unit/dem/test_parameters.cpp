@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "picdem/core/error.hpp"
+#include "picdem/dem/dem_solver.hpp"
 #include "picdem/dem/parameters.hpp"
 #include "picdem/geometry/circle.hpp"
 
@@ -97,4 +98,29 @@ TEST(DemParameters, BadInputNamesKeyValueAndAllowed) {
       solids_from(read("solids:\n  a:\n    type: polygon\n    vertices: [0, 0, 1, 0, 1, 1, 0]\n"
                        "    density: 1\n")),
       core::InputError);
+}
+
+TEST(DemSolverInput, RegionsPerRankAndUniqueIds) {
+  DemConfig c;
+  c.h = 1e-3;
+  const core::Box2 tank{{0, 0}, {1, 1}};
+  const core::Comm self(MPI_COMM_SELF);
+  EXPECT_THROW(DemSolver(self, c, {tank, tank}, tank, {}), core::InputError);
+  DemSolver s(self, c, {tank}, tank, {});
+  SolidSpec a;
+  a.shape = std::make_shared<const geometry::Circle>(0.01);
+  a.density = 1000;
+  a.state.x = {0.5, 0.5};
+  SolidSpec b = a;
+  b.state.x = {0.2, 0.5};
+  try {
+    s.add_solids({a, b});
+    FAIL() << "accepted a repeated id";
+  } catch (const core::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("id 0"), std::string::npos) << e.what();
+  }
+  b.density = -1;
+  b.state.id = 1;
+  DemSolver s2(self, c, {tank}, tank, {});
+  EXPECT_THROW(s2.add_solids({a, b}), core::InputError);
 }
