@@ -26,11 +26,6 @@ signed char state(const CellStates& cells, int i, int k, int nx, int nz) {
   return cells(i, k);
 }
 
-/// The grid's extent (nx, nz) seen from a field: the last block owns the far wall face.
-struct Extent {
-  int nx, nz;
-};
-
 }  // namespace
 
 void declare_parameters(core::ParamSchema& schema) {
@@ -94,18 +89,9 @@ Apertures open_apertures(const grid::Decomposition& d) {
   return E;
 }
 
-namespace {
-// The grid size is not stored in a field; every rank's owned FaceX box ends at nx + 1 only on
-// the last block, so the sizes are passed explicitly where needed. Fields built from one
-// Decomposition agree on them.
-Extent extent_of(const grid::Decomposition& d) {
-  return {d.spec().nx, d.spec().nz};
-}
-}  // namespace
-
 void enforce_walls(FaceField& u, FaceField& w, const FluidConfig& cfg,
                    const grid::Decomposition& d) {
-  const auto [nx, nz] = extent_of(d);
+  const int nx = d.spec().nx, nz = d.spec().nz;
   // Tangential ghost = t * mirrored inside value: free-slip t = +1, no-slip t = -1.
   const double t = cfg.no_slip ? -1.0 : 1.0;
   const auto& bu = u.storage();
@@ -169,7 +155,7 @@ void apply_viscosity(FaceField& u, FaceField& w, const CellStates& cells, double
                      const FluidConfig& cfg, const grid::Decomposition& d, const grid::Halo& halo) {
   core::ScopedTimer timer("fluid: forces");
   if (cfg.nu == 0.0) return;
-  const auto [nx, nz] = extent_of(d);
+  const int nx = d.spec().nx, nz = d.spec().nz;
   const double h = d.spec().h;
   halo.forward(u);
   halo.forward(w);
