@@ -91,9 +91,15 @@ sigterm | sigusr1)
   # A stop signal mid-run: the step finishes, a checkpoint is written, exit code 0; the run
   # continued from it ends bitwise equal to an uninterrupted run. SIGTERM goes to the process
   # (1 rank), SIGUSR1 through mpirun to 2 ranks (Open MPI forwards it).
-  read -r -a c <<< "$(case_args floating_disk)"
+  # (2 ranks: the disks case, whose solids never straddle a rank boundary)
   quiet=(--set output/progress_seconds=0 --set checkpoint/at_end=true)
-  if [ "$test" = sigterm ]; then n=1 sig=TERM; launch=(); else n=2 sig=USR1 launch=("${mpi[@]}" -n 2); fi
+  if [ "$test" = sigterm ]; then
+    sig=TERM launch=()
+    read -r -a c <<< "$(case_args floating_disk)"
+  else
+    sig=USR1 launch=("${mpi[@]}" -n 2)
+    read -r -a c <<< "$(case_args disks)"
+  fi
   "${launch[@]}" "$picdem" "${c[@]}" "${quiet[@]}" --max-steps 80 -o "$W/A" > "$W/A.log" 2>&1 ||
     fail "uninterrupted run failed"
   "${launch[@]}" "$picdem" "${c[@]}" "${quiet[@]}" --max-steps 80 -o "$W/B" > "$W/B.log" 2>&1 &
@@ -131,7 +137,7 @@ bad_files)
     echo "$name: $(grep -F -- "$expect" <<< "$out" | head -1)"
   }
   cp "$good" "$W/truncated.h5" && truncate -s $(($(stat -c %s "$good") / 2)) "$W/truncated.h5"
-  check truncated "truncated" "$W/truncated.h5"
+  check truncated "is not a readable HDF5 file (truncated or corrupted)" "$W/truncated.h5"
   cp "$good" "$W/corrupted.h5"
   $python - "$W/corrupted.h5" << 'EOF' || fail "cannot corrupt the file"
 import sys, h5py
