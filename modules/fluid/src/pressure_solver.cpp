@@ -299,7 +299,10 @@ SolveStats run_solver(const grid::Decomposition& d, const SolverSettings& settin
   // dry): the rows are moved to an equal split of the same numbering, which keeps each rank's
   // rows a few contiguous strips of cells.
   RCP<Tpetra::Import<>> to_balanced;
-  if (settings.rebalance && comm.size() > 1) {
+  // Tpetra 13.2's importAndFillCompleteCrsMatrix throws ("Cannot figure out if PID is owned")
+  // when the source matrix couples no two ranks (no Importer), e.g. all fluid on one rank: such
+  // systems are solved where they were assembled.
+  if (settings.rebalance && comm.size() > 1 && !A->getGraph()->getImporter().is_null()) {
     RCP<const Map> balanced =
         rcp(new Map(static_cast<Tpetra::global_size_t>(stats.unknowns), 0, tcomm));
     to_balanced = rcp(new Tpetra::Import<>(row_map, balanced));

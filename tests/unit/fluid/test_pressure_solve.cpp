@@ -262,3 +262,39 @@ TEST(PressureSolve, SubCellSurfaceIsHydrostaticAtTheTrueSurface) {
   EXPECT_LT(comm.max(perr), 1e-9);
   EXPECT_LT(comm.max(wmax), 1e-9 * 9.81 * dt);
 }
+
+// Only rank 0's block holds fluid: the other ranks own no rows, with and without rebalancing.
+TEST(PressureSolve, RanksWithoutFluid) {
+  core::Comm comm;
+  for (const char* rebalance : {"solver/rebalance=true", "solver/rebalance=false"}) {
+    const auto params = fluid_test::tank_params(1.0, 1.0, 1.0 / 64, {rebalance});
+    const GridSpec s = spec_from(params);
+    Decomposition d(s, comm, 1);
+    Halo halo(d);
+    const auto block = d.owned_cells(0);
+    fluid::CellStates cells(d, Stagger::Cell, kAir);
+    const auto& cb = cells.storage();
+    for (int k = cb.k0; k < cb.k1; ++k)
+      for (int i = cb.i0; i < cb.i1; ++i)
+        if (block.contains(i, k) && k < block.k1 - 1) cells(i, k) = kFluid;
+    const auto E = fluid::open_apertures(d);
+    FaceField u(d, Stagger::FaceX, 0.0), w(d, Stagger::FaceZ, 0.0);
+    const auto cfg = fluid::config_from(params);
+    fluid::apply_gravity(u, w, cells, 0.01, cfg);
+    halo.forward(u), halo.forward(w);
+    fluid::enforce_walls(u, w, cfg, d);
+    CellField p(d, Stagger::Cell, 0.0);
+    fluid::PressureSolver solver(d, params);
+    const auto stats = solver.solve(cells, E, u, w, {}, 0.01, cfg, p);
+    EXPECT_EQ(stats.unknowns, static_cast<long long>(block.nx()) * (block.nz() - 1)) << rebalance;
+    EXPECT_LT(stats.relative_residual, 1e-8) << rebalance;
+    // Hydrostatic below the block's top fluid row: p = rho g h (top - k).
+    double perr = 0.0;
+    for (int k = cells.owned().k0; k < cells.owned().k1; ++k)
+      for (int i = cells.owned().i0; i < cells.owned().i1; ++i)
+        if (cells(i, k) == kFluid)
+          perr =
+              std::max(perr, std::abs(p(i, k) / (1000.0 * 9.81 * s.h * (block.k1 - 1 - k)) - 1.0));
+    EXPECT_LT(comm.max(perr), 1e-6) << rebalance;
+  }
+}
