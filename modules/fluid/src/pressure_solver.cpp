@@ -10,7 +10,6 @@
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_Core.hpp>
 #include <Tpetra_CrsMatrix.hpp>
-#include <Tpetra_Import.hpp>
 #include <Tpetra_Map.hpp>
 #include <Tpetra_MultiVector.hpp>
 
@@ -184,6 +183,121 @@ AssembledSystem PressureSolver::assemble(const CellStates& cells, const Aperture
 
 namespace {
 
+/// Matrix rows with global (contiguous) numbers, as moved between ranks.
+struct Rows {
+  std::vector<GO> gid;
+  std::vector<std::size_t> ptr;
+  std::vector<GO> col;
+  std::vector<double> val, rhs, x, cx, cz;
+};
+
+int owner_in(const std::vector<long long>& first, long long gid) {
+  return static_cast<int>(std::upper_bound(first.begin(), first.end(), gid) - first.begin()) - 1;
+}
+
+/// Sends every row to the rank whose range [first[q], first[q+1]) holds its number. Rows arrive
+/// in increasing number (ranges are contiguous and sent in order).
+Rows exchange_rows(const Rows& in, const std::vector<long long>& first, MPI_Comm comm) {
+  int P = 0;
+  MPI_Comm_size(comm, &P);
+  std::vector<std::vector<double>> out(static_cast<std::size_t>(P));
+  for (std::size_t r = 0; r < in.gid.size(); ++r) {
+    auto& b = out[static_cast<std::size_t>(owner_in(first, in.gid[r]))];
+    const std::size_t n = in.ptr[r + 1] - in.ptr[r];
+    b.insert(b.end(), {static_cast<double>(in.gid[r]), static_cast<double>(n), in.rhs[r], in.x[r],
+                       in.cx[r], in.cz[r]});
+    for (std::size_t m = in.ptr[r]; m < in.ptr[r + 1]; ++m)
+      b.insert(b.end(), {static_cast<double>(in.col[m]), in.val[m]});
+  }
+  std::vector<int> send_n(static_cast<std::size_t>(P)), recv_n(static_cast<std::size_t>(P));
+  std::vector<int> send_at(static_cast<std::size_t>(P)), recv_at(static_cast<std::size_t>(P));
+  std::vector<double> send;
+  for (int q = 0; q < P; ++q) {
+    send_at[static_cast<std::size_t>(q)] = static_cast<int>(send.size());
+    send_n[static_cast<std::size_t>(q)] = static_cast<int>(out[static_cast<std::size_t>(q)].size());
+    send.insert(send.end(), out[static_cast<std::size_t>(q)].begin(),
+                out[static_cast<std::size_t>(q)].end());
+  }
+  MPI_Alltoall(send_n.data(), 1, MPI_INT, recv_n.data(), 1, MPI_INT, comm);
+  int total = 0;
+  for (int q = 0; q < P; ++q)
+    recv_at[static_cast<std::size_t>(q)] = total, total += recv_n[static_cast<std::size_t>(q)];
+  std::vector<double> recv(static_cast<std::size_t>(total));
+  MPI_Alltoallv(send.data(), send_n.data(), send_at.data(), MPI_DOUBLE, recv.data(), recv_n.data(),
+                recv_at.data(), MPI_DOUBLE, comm);
+  Rows rows;
+  rows.ptr.push_back(0);
+  for (std::size_t p = 0; p < recv.size();) {
+    rows.gid.push_back(static_cast<GO>(recv[p]));
+    const auto n = static_cast<std::size_t>(recv[p + 1]);
+    rows.rhs.push_back(recv[p + 2]);
+    rows.x.push_back(recv[p + 3]);
+    rows.cx.push_back(recv[p + 4]);
+    rows.cz.push_back(recv[p + 5]);
+    p += 6;
+    for (std::size_t m = 0; m < n; ++m, p += 2) {
+      rows.col.push_back(static_cast<GO>(recv[p]));
+      rows.val.push_back(recv[p + 1]);
+    }
+    rows.ptr.push_back(rows.col.size());
+  }
+  return rows;
+}
+
+/// The values of the rows numbered `gid` (held here) sent back to the ranks whose ranges
+/// `first` hold them; returns this rank's values in increasing number.
+std::vector<double> return_values(const std::vector<GO>& gid, const std::vector<double>& v,
+                                  const std::vector<long long>& first, MPI_Comm comm) {
+  Rows r;
+  r.gid = gid;
+  r.ptr.assign(gid.size() + 1, 0);
+  r.rhs = v;
+  r.x = r.cx = r.cz = std::vector<double>(gid.size(), 0.0);
+  const Rows back = exchange_rows(r, first, comm);
+  return back.rhs;
+}
+
+/// The CrsMatrix of `rows` (numbers of `map`, contiguous): column map = own rows, then the
+/// other columns in increasing number.
+RCP<Matrix> build_matrix(const Rows& rows, const RCP<const Map>& map,
+                         const RCP<const Teuchos::Comm<int>>& tcomm) {
+  const GO first = rows.gid.empty() ? 0 : rows.gid.front();
+  const auto n = static_cast<GO>(rows.gid.size());
+  std::vector<GO> remote;
+  for (GO c : rows.col)
+    if (c < first || c >= first + n) remote.push_back(c);
+  std::sort(remote.begin(), remote.end());
+  remote.erase(std::unique(remote.begin(), remote.end()), remote.end());
+  std::vector<GO> col_gids(rows.gid.begin(), rows.gid.end());
+  col_gids.insert(col_gids.end(), remote.begin(), remote.end());
+  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+  RCP<const Map> col_map = rcp(
+      new Map(invalid, Teuchos::ArrayView<const GO>(col_gids.data(), col_gids.size()), 0, tcomm));
+  Teuchos::ArrayRCP<std::size_t> row_ptr(rows.gid.size() + 1);
+  Teuchos::ArrayRCP<LO> col_idx(rows.col.size());
+  Teuchos::ArrayRCP<double> vals(rows.col.size());
+  std::vector<std::pair<LO, double>> tmp;
+  row_ptr[0] = 0;
+  for (std::size_t r = 0; r < rows.gid.size(); ++r) {
+    tmp.clear();
+    for (std::size_t m = rows.ptr[r]; m < rows.ptr[r + 1]; ++m) {
+      const GO c = rows.col[m];
+      const LO lid = c >= first && c < first + n
+                         ? static_cast<LO>(c - first)
+                         : static_cast<LO>(n + (std::lower_bound(remote.begin(), remote.end(), c) -
+                                                remote.begin()));
+      tmp.emplace_back(lid, rows.val[m]);
+    }
+    std::sort(tmp.begin(), tmp.end());
+    std::size_t m = rows.ptr[r];
+    for (const auto& [lid, v] : tmp) col_idx[m] = lid, vals[m] = v, ++m;
+    row_ptr[r + 1] = rows.ptr[r + 1];
+  }
+  RCP<Matrix> A = rcp(new Matrix(map, col_map, row_ptr, col_idx, vals));
+  A->fillComplete(map, map);
+  return A;
+}
+
 SolveStats run_solver(const grid::Decomposition& d, const SolverSettings& settings,
                       const AssembledSystem& sys, std::vector<double>& x) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -220,7 +334,7 @@ SolveStats run_solver(const grid::Decomposition& d, const SolverSettings& settin
   for (std::size_t r = 0; r < sys.rows.size(); ++r)
     row_gids[r] = row_map->getGlobalElement(static_cast<LO>(r));
 
-  // Column map: the owned rows first (same order), then the other columns by gid.
+  // Column numbers: owned cells by local index, other cells through their owner.
   grid::GridArray<int> local_of(d, grid::Stagger::Cell, -1);
   const core::IndexBox own = d.owned_cells();
   for (std::size_t r = 0; r < sys.rows.size(); ++r)
@@ -231,15 +345,12 @@ SolveStats run_solver(const grid::Decomposition& d, const SolverSettings& settin
     return own.contains(i, k) ? local_of(i, k) : -1;
   };
   std::vector<GO> remote;
-  std::size_t nnz = 0;
-  for (const auto& row : sys.entries) {
-    nnz += row.size();
+  for (const auto& row : sys.entries)
     for (const auto& [c, v] : row)
       if (owned_lid(c) < 0) remote.push_back(c);
-  }
   std::sort(remote.begin(), remote.end());
   remote.erase(std::unique(remote.begin(), remote.end()), remote.end());
-  std::vector<GO> col_gids = row_gids;
+  std::vector<GO> remote_gid(remote.size());
   {
     // Owner and local index of every remote cell id give its contiguous number.
     Teuchos::Array<int> pids(remote.size());
@@ -250,71 +361,58 @@ SolveStats run_solver(const grid::Decomposition& d, const SolverSettings& settin
       if (pids[n] < 0)
         throw core::SolverError("pressure matrix column of cell " + std::to_string(remote[n]) +
                                 " is not a fluid cell on any rank");
-      col_gids.push_back(static_cast<GO>(offsets[static_cast<std::size_t>(pids[n])]) + lids[n]);
+      remote_gid[n] = static_cast<GO>(offsets[static_cast<std::size_t>(pids[n])]) + lids[n];
     }
   }
-  RCP<const Map> col_map = rcp(
-      new Map(invalid, Teuchos::ArrayView<const GO>(col_gids.data(), col_gids.size()), 0, tcomm));
-
-  Teuchos::ArrayRCP<std::size_t> row_ptr(sys.rows.size() + 1);
-  Teuchos::ArrayRCP<LO> col_idx(nnz);
-  Teuchos::ArrayRCP<double> vals(nnz);
-  std::size_t m = 0;
-  row_ptr[0] = 0;
-  std::vector<std::pair<LO, double>> tmp;
-  for (std::size_t r = 0; r < sys.entries.size(); ++r) {
-    tmp.clear();
+  Rows rows;
+  rows.ptr.push_back(0);
+  for (std::size_t r = 0; r < sys.rows.size(); ++r) {
+    rows.gid.push_back(row_gids[r]);
     for (const auto& [c, v] : sys.entries[r]) {
-      int lid = owned_lid(c);
-      if (lid < 0)
-        lid = static_cast<int>(
-            row_gids.size() + (std::lower_bound(remote.begin(), remote.end(), c) - remote.begin()));
-      tmp.emplace_back(lid, v);
+      const int lid = owned_lid(c);
+      rows.col.push_back(
+          lid >= 0 ? row_gids[static_cast<std::size_t>(lid)]
+                   : remote_gid[static_cast<std::size_t>(
+                         std::lower_bound(remote.begin(), remote.end(), c) - remote.begin())]);
+      rows.val.push_back(v);
     }
-    std::sort(tmp.begin(), tmp.end());
-    for (const auto& [lid, v] : tmp) col_idx[m] = lid, vals[m] = v, ++m;
-    row_ptr[r + 1] = m;
-  }
-  RCP<Matrix> A = rcp(new Matrix(row_map, col_map, row_ptr, col_idx, vals));
-  A->fillComplete(row_map, row_map);
-
-  RCP<MV> X = rcp(new MV(row_map, 1)), B = rcp(new MV(row_map, 1));
-  RCP<MV> coords = rcp(new MV(row_map, 2));
-  const RCP<MV> X_grid = X;
-  {
-    auto xv = X->getDataNonConst(0);
-    auto bv = B->getDataNonConst(0);
-    auto cx = coords->getDataNonConst(0);
-    auto cz = coords->getDataNonConst(1);
-    for (std::size_t r = 0; r < sys.rows.size(); ++r) {
-      xv[r] = x[r];
-      bv[r] = sys.rhs[r];
-      const auto c = g.position(grid::Stagger::Cell, static_cast<int>(sys.rows[r] % g.nx),
-                                static_cast<int>(sys.rows[r] / g.nx));
-      cx[r] = c.x, cz[r] = c.z;
-    }
+    rows.ptr.push_back(rows.col.size());
+    rows.rhs.push_back(sys.rhs[r]);
+    rows.x.push_back(x[r]);
+    const auto c = g.position(grid::Stagger::Cell, static_cast<int>(sys.rows[r] % g.nx),
+                              static_cast<int>(sys.rows[r] / g.nx));
+    rows.cx.push_back(c.x);
+    rows.cz.push_back(c.z);
   }
 
   // The grid's blocks hold unequal numbers of fluid cells (a dam break leaves whole blocks
   // dry): the rows are moved to an equal split of the same numbering, which keeps each rank's
   // rows a few contiguous strips of cells.
-  RCP<Tpetra::Import<>> to_balanced;
-  // Tpetra 13.2's importAndFillCompleteCrsMatrix throws ("Cannot figure out if PID is owned")
-  // when the source matrix couples no two ranks (no Importer), e.g. all fluid on one rank: such
-  // systems are solved where they were assembled.
-  if (settings.rebalance && comm.size() > 1 && !A->getGraph()->getImporter().is_null()) {
-    RCP<const Map> balanced =
-        rcp(new Map(static_cast<Tpetra::global_size_t>(stats.unknowns), 0, tcomm));
-    to_balanced = rcp(new Tpetra::Import<>(row_map, balanced));
-    A = Tpetra::importAndFillCompleteCrsMatrix<Matrix>(RCP<const Matrix>(A), *to_balanced, balanced,
-                                                       balanced);
-    auto move = [&](RCP<MV>& v) {
-      RCP<MV> moved = rcp(new MV(balanced, v->getNumVectors()));
-      moved->doImport(*v, *to_balanced, Tpetra::INSERT);
-      v = moved;
-    };
-    move(X), move(B), move(coords);
-    row_map = balanced;
+  const int P = comm.size();
+  std::vector<long long> grid_first(static_cast<std::size_t>(P) + 1), solve_first = grid_first;
+  for (int q = 0; q < P; ++q)
+    grid_first[static_cast<std::size_t>(q)] =
+        static_cast<long long>(offsets[static_cast<std::size_t>(q)]);
+  grid_first[static_cast<std::size_t>(P)] = stats.unknowns;
+  const bool rebalance = settings.rebalance && P > 1;
+  for (int q = 0; q <= P; ++q)
+    solve_first[static_cast<std::size_t>(q)] =
+        rebalance ? stats.unknowns * q / P : grid_first[static_cast<std::size_t>(q)];
+  if (rebalance) rows = exchange_rows(rows, solve_first, comm.raw());
+
+  RCP<const Map> solve_map =
+      rcp(new Map(static_cast<Tpetra::global_size_t>(stats.unknowns), rows.gid.size(), 0, tcomm));
+  RCP<Matrix> A = build_matrix(rows, solve_map, tcomm);
+  row_map = solve_map;
+  RCP<MV> X = rcp(new MV(row_map, 1)), B = rcp(new MV(row_map, 1));
+  RCP<MV> coords = rcp(new MV(row_map, 2));
+  {
+    auto xv = X->getDataNonConst(0);
+    auto bv = B->getDataNonConst(0);
+    auto cx = coords->getDataNonConst(0);
+    auto cz = coords->getDataNonConst(1);
+    for (std::size_t r = 0; r < rows.gid.size(); ++r)
+      xv[r] = rows.x[r], bv[r] = rows.rhs[r], cx[r] = rows.cx[r], cz[r] = rows.cz[r];
   }
 
   Teuchos::ParameterList muelu = settings.muelu;
@@ -374,10 +472,11 @@ SolveStats run_solver(const grid::Decomposition& d, const SolverSettings& settin
     }
   }
   stats.solve_seconds = seconds_since(t1);
-  if (to_balanced) X_grid->doExport(*X, *to_balanced, Tpetra::INSERT);
   {
-    auto xv = X_grid->getData(0);
-    for (std::size_t r = 0; r < sys.rows.size(); ++r) x[r] = xv[r];
+    auto xv = X->getData(0);
+    std::vector<double> solved(xv.begin(), xv.end());
+    if (rebalance) solved = return_values(rows.gid, solved, grid_first, comm.raw());
+    for (std::size_t r = 0; r < sys.rows.size(); ++r) x[r] = solved[r];
   }
   if (!(stats.relative_residual <= settings.tolerance)) {
     std::ostringstream msg;
