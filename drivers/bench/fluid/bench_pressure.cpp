@@ -3,7 +3,8 @@
 // several MueLu settings. With the argument "balanced" the tank is full to its top row instead,
 // so that every rank holds the same number of fluid cells. Prints unknowns, CG iterations to 1e-8
 // and setup / solve seconds (best of `repeats`). Run with 1 and 2 ranks:
-//   mpirun -n 2 build/drivers/bench/fluid/bench_pressure [balanced] [default] [n ...]
+//   mpirun -n 2 build/drivers/bench/fluid/bench_pressure [balanced] [default] [--set=key=value] [n
+//   ...]
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -32,11 +33,14 @@ int main(int argc, char** argv) {
   core::Comm comm;
   std::vector<int> sizes;
   bool balanced = false, only_default = false;
+  std::vector<std::string> extra;  // --set=path=value, applied after each variant's settings
   for (int a = 1; a < argc; ++a) {
     if (std::string(argv[a]) == "balanced")
       balanced = true;
     else if (std::string(argv[a]) == "default")
       only_default = true;
+    else if (std::string(argv[a]).rfind("--set=", 0) == 0)
+      extra.push_back(std::string(argv[a]).substr(6));
     else
       sizes.push_back(std::atoi(argv[a]));
   }
@@ -65,7 +69,9 @@ int main(int argc, char** argv) {
       fluid::declare_parameters(schema);
       const std::string yaml =
           "grid: {length: 1.0, height: 1.0, cell_size: " + std::to_string(1.0 / n) + "}\n";
-      const auto params = core::read_case_text(yaml, "bench", v.overrides, schema);
+      auto overrides = v.overrides;
+      overrides.insert(overrides.end(), extra.begin(), extra.end());
+      const auto params = core::read_case_text(yaml, "bench", overrides, schema);
       const GridSpec s = spec_from(params);
       Decomposition d(s, comm, fluid::required_halo());
       Halo halo(d);
