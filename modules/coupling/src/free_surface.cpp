@@ -44,12 +44,6 @@ void particle_occupancy(const particles::ParticleSet& ps, const grid::Decomposit
   halo.forward(S);
 }
 
-double surface_theta(double s_f, double s_a, double theta_min) {
-  const double phi_f = 0.5 - s_f, phi_a = 0.5 - s_a;
-  if (!(phi_f < 0.0) || !(phi_a > phi_f)) return phi_f < 0.0 ? 1.0 : theta_min;
-  return std::clamp(phi_f / (phi_f - phi_a), theta_min, 1.0);
-}
-
 double occupied_area(const grid::CellField& S, const grid::Decomposition& d, const core::Comm& comm) {
   const auto& spec = d.spec();
   const auto own = d.owned_cells();

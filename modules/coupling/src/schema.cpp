@@ -32,11 +32,23 @@ void declare_parameters(core::ParamSchema& s) {
   s.integer("output/png_width", 1000, "width of the PNG pictures [pixels]").at_least(64).at_most(8000);
   s.real("output/progress_seconds", 5.0, "wall seconds between progress lines").non_negative();
 
+  s.section("free_surface", "The free surface from the particles (doc/coupling.md).");
+  s.string("free_surface/method", "ghost_fluid", {"ghost_fluid", "cells"},
+           "p = 0 on the particles' level set S = 1/2 between cell centres (ghost fluid), or at "
+           "the centres of cells without particles");
+  s.real("free_surface/theta_min", 0.01,
+         "smallest distance fraction of a fluid-air face to the surface (ghost fluid)")
+      .greater_than(0.0)
+      .at_most(1.0);
+
   s.section("coupling", "The fluid-solid coupling.");
   s.real("coupling/beta", 0.5,
          "gap damping (eq. 20): particle velocity factor at a contact point; 1 switches it off")
       .at_least(0.0)
       .at_most(1.0);
+  s.boolean("coupling/hydrostatic_quadrature", true,
+            "carry the cell pressure to each wetted piece along rho g in the solid loads "
+            "(false: the cell-centre value, as the paper)");
   s.real("coupling/tiny_cell_fraction", 1e-3,
          "cut cells with a smaller fluid fraction are made solid (doc/geometry.md)")
       .at_least(0.0)

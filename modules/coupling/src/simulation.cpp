@@ -88,6 +88,7 @@ Simulation::Simulation(core::Comm comm, core::Params params, std::string output_
 
   if (s.has_fluid) {
     s.fluid_cfg = fluid::config_from(params);
+    s.quadrature = {params.boolean("coupling/hydrostatic_quadrature"), s.fluid_cfg.rho, s.fluid_cfg.g};
     s.pressure = std::make_unique<fluid::PressureSolver>(d, params);
     s.u = FaceField(d, Stagger::FaceX);
     s.w = FaceField(d, Stagger::FaceZ);
@@ -98,13 +99,27 @@ Simulation::Simulation(core::Comm comm, core::Params params, std::string output_
     s.cells = fluid::CellStates(d, Stagger::Cell, static_cast<signed char>(CellState::Air));
     s.count = grid::GridArray<int>(d, Stagger::Cell, 0);
     s.occupancy = grid::CellField(d, Stagger::Cell);
+    s.phi = grid::CellField(d, Stagger::Cell);
+    s.ghost_fluid = params.string("free_surface/method") == "ghost_fluid";
+    s.theta_min = params.real("free_surface/theta_min");
     s.apertures = fluid::open_apertures(d);
     // Water is seeded where neither solids nor obstacles are.
     const SolidScene scene0 = scene_of(s.dem.get(), s.obstacles);
     const SolidLocator locator(scene0);
+    // Cells are seeded by their centre; particles that fall inside a body are then removed, so
+    // that cut cells whose centre is covered still get particles in their fluid part.
     s.particles = particles::seed(d, s.particle_cfg, [&](Vec2 c) {
-      return inside_water(params, c) && !locator.inside(c);
+      const double r = 0.5 * s.spec.h;
+      return inside_water(params, c) || inside_water(params, c + Vec2{r, r}) ||
+             inside_water(params, c + Vec2{-r, r}) || inside_water(params, c + Vec2{r, -r}) ||
+             inside_water(params, c + Vec2{-r, -r});
     });
+    std::vector<char> keep(s.particles.size());
+    for (std::size_t n = 0; n < keep.size(); ++n) {
+      const Vec2 p{s.particles.x[n], s.particles.z[n]};
+      keep[n] = inside_water(params, p) && !locator.inside(p);
+    }
+    s.particles.keep_if(keep);
     const double n = static_cast<double>(s.particle_cfg.per_cell_1d);
     s.particle_mass = s.fluid_cfg.rho * s.spec.h * s.spec.h / (n * n);
   }
@@ -147,18 +162,43 @@ void place_solids(SimulationState& s) {
   s.cut = cut_cells(s.scene, *s.decomp, s.params.real("coupling/tiny_cell_fraction"), s.apertures);
 }
 
-// transfer (cells): fluid = holds particles and is not covered; solid = covered; else air.
+// transfer (cells): the particle occupancy S and the level set phi = 1/2 - S (free_surface.hpp),
+// S divided by the share of the tent kernel open to fluid so that solids do not read as air.
+// Cells: fluid = holds particles, or is a cut cell below the free surface (phi < 0: a cut cell
+// may hold no particle in its sliver of fluid); solid = covered; air otherwise.
 void mark_cells(SimulationState& s) {
   core::ScopedTimer timer("transfer: mark cells");
   particles::count_per_cell(s.particles, *s.halo, s.count);
+  particle_occupancy(s.particles, *s.decomp, *s.halo,
+                     s.particle_cfg.per_cell_1d * s.particle_cfg.per_cell_1d, s.occupancy);
   const bool cut = !s.scene.placements.empty() || !s.scene.obstacles.empty();
   const auto b = s.cells.storage();
+  const auto ext = s.spec.extent(Stagger::Cell);
+  const double tent[3] = {0.125, 0.75, 0.125};  // the tent's mass in the cell and either neighbour
   for (int k = b.k0; k < b.k1; ++k)
     for (int i = b.i0; i < b.i1; ++i) {
       CellState c = s.count(i, k) > 0 ? CellState::Fluid : CellState::Air;
-      if (cut && s.cut.fluid_fraction(i, k) <= 0.0) c = CellState::Solid;
+      double S = s.occupancy(i, k);
+      if (cut) {
+        const double f = s.cut.fluid_fraction(i, k);
+        double open = 0.0, all = 0.0;
+        for (int bb = -1; bb <= 1; ++bb)
+          for (int aa = -1; aa <= 1; ++aa) {
+            if (!ext.contains(i + aa, k + bb) || !s.cells.in_storage(i + aa, k + bb)) continue;
+            const double wgt = tent[aa + 1] * tent[bb + 1];
+            open += wgt * s.cut.fluid_fraction(i + aa, k + bb);
+            all += wgt;
+          }
+        if (open > 0.05 * all) S *= all / open;
+        if (f <= 0.0)
+          c = CellState::Solid;
+        else if (c == CellState::Air && f < 1.0 && S > 0.5)
+          c = CellState::Fluid;
+      }
+      s.phi(i, k) = 0.5 - S;
       s.cells(i, k) = static_cast<signed char>(c);
     }
+  if (s.ghost_fluid) s.surface = fluid::surface_fractions(s.phi, s.cells, *s.decomp, s.theta_min);
 }
 
 // Faces carrying fluid velocity (open, next to a fluid cell), plus faces closed by a body, which
@@ -201,16 +241,18 @@ void solve_pressure(SimulationState& s, double dt) {
   if (s.dem) {
     core::ScopedTimer timer("geometry");
     couplings = solid_couplings(s.scene, s.cut, s.cells, *s.decomp, s.collision_loads,
-                                s.fluid_cfg.g, dt, s.comm);
+                                s.quadrature, dt, s.comm);
   }
   core::ScopedTimer timer("pressure");
-  s.last_solve = s.pressure->solve(s.cells, s.apertures, s.u, s.w, couplings, dt, s.fluid_cfg, s.p);
+  s.last_solve = s.pressure->solve(s.cells, s.apertures, s.u, s.w, couplings, dt, s.fluid_cfg, s.p,
+                                   s.ghost_fluid ? &s.surface : nullptr);
 }
 
 // project: u^{n+1} = u~ - dt/rho grad p on open faces.
 void project(SimulationState& s, double dt) {
   core::ScopedTimer timer("project");
-  fluid::project(s.u, s.w, s.p, s.cells, s.apertures, dt, s.fluid_cfg);
+  fluid::project(s.u, s.w, s.p, s.cells, s.apertures, dt, s.fluid_cfg,
+                 s.ghost_fluid ? &s.surface : nullptr);
   fluid::enforce_walls(s.u, s.w, s.fluid_cfg, *s.decomp);
 }
 
@@ -220,7 +262,8 @@ void advance_solids(SimulationState& s, double dt) {
   core::ScopedTimer timer("solids");
   s.fluid_loads.clear();
   if (s.has_fluid)
-    s.fluid_loads = fluid_loads(s.scene, s.cut, s.cells, s.p, *s.decomp, *s.dem, s.comm);
+    s.fluid_loads =
+        fluid_loads(s.scene, s.cut, s.cells, s.p, *s.decomp, *s.dem, s.quadrature, s.comm);
   s.dem->advance(dt, s.fluid_loads);
 }
 

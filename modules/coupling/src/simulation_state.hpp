@@ -40,6 +40,10 @@ struct SimulationState {
   fluid::CellStates cells;
   grid::GridArray<int> count;
   grid::CellField occupancy;  // S of free_surface.hpp
+  grid::CellField phi;        // level set 1/2 - S (open-volume corrected), < 0 in the fluid
+  bool ghost_fluid = true;    // sub-cell free surface (else p = 0 at air cell centres)
+  double theta_min = 0.01;
+  fluid::SurfaceFractions surface;
   fluid::Apertures apertures;
   double particle_mass = 0.0;  // per unit depth
 
@@ -50,6 +54,7 @@ struct SimulationState {
   geometry::CutCells cut;
   std::vector<core::SolidLoads> collision_loads, fluid_loads;
   double beta = 1.0;
+  QuadratureOptions quadrature;
 
   // run
   double t = 0.0, t_end = 0.0;

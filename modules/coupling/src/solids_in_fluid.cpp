@@ -67,6 +67,16 @@ bool fluid_cell(const fluid::CellStates& cells, int i, int k) {
   return cells(i, k) == static_cast<signed char>(CellState::Fluid);
 }
 
+// Hydrostatic quadrature load of one piece: -rho g.(m - x_c) a_piece.
+void add_quadrature_load(const geometry::WettedPiece& piece, const grid::GridSpec& spec,
+                         const QuadratureOptions& q, double* r) {
+  if (!q.hydrostatic) return;
+  const Vec2 m = 0.5 * (piece.p0 + piece.p1);
+  const Vec2 xc = spec.position(Stagger::Cell, piece.i, piece.k);
+  const double dp = q.rho * core::dot(q.g, m - xc);
+  r[0] -= dp * piece.n_dl.x, r[1] -= dp * piece.n_dl.z, r[2] -= dp * piece.r_cross_n_dl;
+}
+
 }  // namespace
 
 std::vector<fluid::SolidCoupling> solid_couplings(const SolidScene& scene,
@@ -74,20 +84,25 @@ std::vector<fluid::SolidCoupling> solid_couplings(const SolidScene& scene,
                                                   const fluid::CellStates& cells,
                                                   const grid::Decomposition& d,
                                                   const std::vector<core::SolidLoads>& collision,
-                                                  Vec2 gravity, double dt,
+                                                  const QuadratureOptions& quadrature, double dt,
                                                   const core::Comm& comm) {
+  const Vec2 gravity = quadrature.g;
   const auto n = solid_count(scene, comm);
   if (n == 0) return {};
-  // Predicted collision loads of every solid, from their owners.
+  const auto own = d.owned_cells();
+  const auto& spec = d.spec();
+  // Predicted collision loads of every solid, from their owners, plus the quadrature loads.
   IdTable coll(n, 3);
   for (const auto& l : collision) {
     double* r = coll.row(l.id);
     r[0] = l.force.x, r[1] = l.force.z, r[2] = l.torque;
   }
+  for (const auto& piece : cut.pieces)
+    if (piece.body >= 0 && own.contains(piece.i, piece.k) && fluid_cell(cells, piece.i, piece.k))
+      add_quadrature_load(piece, spec, quadrature,
+                          coll.row(scene.states[static_cast<std::size_t>(piece.body)].id));
   comm.sum_in_place(coll.v);
 
-  const auto own = d.owned_cells();
-  const auto& spec = d.spec();
   std::map<int, fluid::SolidCoupling> by_body;  // body index -> coupling, in body order
   std::map<std::pair<int, long long>, std::size_t> slot;
   for (const auto& piece : cut.pieces) {
@@ -121,10 +136,13 @@ std::vector<fluid::SolidCoupling> solid_couplings(const SolidScene& scene,
 std::vector<core::SolidLoads> fluid_loads(const SolidScene& scene, const geometry::CutCells& cut,
                                           const fluid::CellStates& cells,
                                           const grid::CellField& p, const grid::Decomposition& d,
-                                          const dem::DemSolver& dem, const core::Comm& comm) {
+                                          const dem::DemSolver& dem,
+                                          const QuadratureOptions& quadrature,
+                                          const core::Comm& comm) {
   const auto n = solid_count(scene, comm);
   IdTable load(std::max<std::int64_t>(n, 1), 3);
   const auto own = d.owned_cells();
+  const auto& spec = d.spec();
   for (const auto& piece : cut.pieces) {
     if (piece.body < 0 || !own.contains(piece.i, piece.k) || !fluid_cell(cells, piece.i, piece.k))
       continue;
@@ -132,6 +150,7 @@ std::vector<core::SolidLoads> fluid_loads(const SolidScene& scene, const geometr
     double* r = load.row(scene.states[static_cast<std::size_t>(piece.body)].id);
     // J p = - sum_c a_{s,c} p_c : force -int p n dl, torque -int p (r x n) dl
     r[0] -= piece.n_dl.x * pc, r[1] -= piece.n_dl.z * pc, r[2] -= piece.r_cross_n_dl * pc;
+    add_quadrature_load(piece, spec, quadrature, r);
   }
   comm.sum_in_place(load.v);
   std::vector<core::SolidLoads> out;

@@ -20,10 +20,6 @@ namespace picdem::coupling {
 void particle_occupancy(const particles::ParticleSet& ps, const grid::Decomposition& d,
                         const grid::Halo& halo, int particles_per_cell, grid::CellField& S);
 
-/// Surface fraction theta in [theta_min, 1] of the face between fluid cell with occupancy s_f and
-/// air cell with occupancy s_a.
-double surface_theta(double s_f, double s_a, double theta_min);
-
 /// Area where the bilinear interpolant of S between cell centres exceeds 1/2, summed over the
 /// owned cells of every rank (S needs a current halo).
 double occupied_area(const grid::CellField& S, const grid::Decomposition& d, const core::Comm& comm);

@@ -30,22 +30,37 @@ SolidScene scene_of(const dem::DemSolver* dem, const std::vector<geometry::Obsta
 geometry::CutCells cut_cells(const SolidScene& scene, const grid::Decomposition& d,
                              double tiny_fraction, fluid::Apertures& apertures);
 
+/// The hydrostatic part of the boundary quadrature: J p takes p at the cell centre x_c for the
+/// whole piece of boundary in the cell; with rho_g_quadrature the pressure is carried from x_c
+/// to the piece's midpoint m along the hydrostatic gradient, p(m) = p_c + rho g.(m - x_c), which
+/// adds the p-independent load -sum_c rho g.(m_c - x_c) a_{s,c}. It keeps the system symmetric
+/// and makes the discrete Archimedes force exact to second order (doc/coupling.md).
+struct QuadratureOptions {
+  bool hydrostatic = true;
+  double rho = 1000.0;
+  core::Vec2 g{0.0, -9.81};
+};
+
 /// One SolidCoupling per solid with pieces in this rank's owned fluid cells (partial lists,
 /// joined by id in the solver): a_{s,c} = (int n dl, int r x n dl), M_s, and
-/// V* = V^n + dt M^-1 (F_g + F_coll) with F_coll the collision loads predicted at level n.
+/// V* = V^n + dt M^-1 (F_g + F_coll + F_q) with F_coll the collision loads predicted at level n
+/// and F_q the hydrostatic quadrature load.
 std::vector<fluid::SolidCoupling> solid_couplings(const SolidScene& scene,
                                                   const geometry::CutCells& cut,
                                                   const fluid::CellStates& cells,
                                                   const grid::Decomposition& d,
                                                   const std::vector<core::SolidLoads>& collision,
-                                                  core::Vec2 gravity, double dt,
+                                                  const QuadratureOptions& quadrature, double dt,
                                                   const core::Comm& comm);
 
-/// Pressure loads J p = -sum_c a_{s,c} p_c on every owned solid of `dem` (summed over ranks).
+/// Pressure loads J p + F_q, J p = -sum_c a_{s,c} p_c, on every owned solid of `dem` (summed
+/// over ranks).
 std::vector<core::SolidLoads> fluid_loads(const SolidScene& scene, const geometry::CutCells& cut,
                                           const fluid::CellStates& cells,
                                           const grid::CellField& p, const grid::Decomposition& d,
-                                          const dem::DemSolver& dem, const core::Comm& comm);
+                                          const dem::DemSolver& dem,
+                                          const QuadratureOptions& quadrature,
+                                          const core::Comm& comm);
 
 /// Faces closed by a body get its rigid velocity (obstacles: 0) and are marked valid, so that
 /// interpolation next to a solid sees the solid's motion.

@@ -1,0 +1,110 @@
+// Solids in still water (cases/floating_box, floating_disk, neutral_disk, still_tank_obstacle):
+// Archimedes' floating positions, a neutrally buoyant disk that stays put, a fixed obstacle that
+// leaves the water still and hydrostatic, and the pressure load J p against an independent
+// integral of the pressure field over the wetted boundary.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "case_loader.hpp"
+#include "picdem/coupling/simulation.hpp"
+
+using namespace picdem;
+
+namespace {
+double submerged_segment_area(double r, double centre_above_level) {
+  const double d = std::clamp(centre_above_level, -r, r);
+  return r * r * std::acos(d / r) - d * std::sqrt(r * r - d * d);
+}
+}  // namespace
+
+TEST(Archimedes, FloatingBoxSettlesAtItsDraft) {
+  core::Comm comm;
+  const auto params = test_support::load_case(comm, "cases/floating_box/case.yaml");
+  coupling::Simulation sim(comm, params, "");
+  sim.run();
+  const double h = params.real("grid/cell_size"), H = 0.02, expected = 0.5 * H;  // rho_s/rho_f H
+  const auto box = sim.solids().at(0);
+  const double level = sim.surface_height(0.02);  // far from the box
+  const double bottom = box.x.z - 0.5 * H * std::cos(box.theta) - 0.02 * std::abs(std::sin(box.theta));
+  const double draft = level - bottom;
+  if (comm.is_root())
+    std::printf("floating box: level %.5f m, draft %.5f m (expected %.5f), tilt %.2e rad, |v| %.2e m/s\n",
+                level, draft, expected, box.theta, core::norm(box.v));
+  EXPECT_NEAR(draft, expected, 0.25 * h);
+  EXPECT_LT(std::abs(box.theta), 0.05);
+}
+
+TEST(Archimedes, FloatingDiskHalfSubmerged) {
+  core::Comm comm;
+  const auto params = test_support::load_case(comm, "cases/floating_disk/case.yaml");
+  coupling::Simulation sim(comm, params, "");
+  sim.run();
+  const double r = 0.01;
+  const auto disk = sim.solids().at(0);
+  const double level = sim.surface_height(0.015);
+  const double area = submerged_segment_area(r, disk.x.z - level);
+  const double expected = 0.5 * M_PI * r * r;  // (rho_s / rho_f) pi r^2
+  if (comm.is_root())
+    std::printf("floating disk: centre %.5f m, level %.5f m, submerged area / expected = %.4f\n",
+                disk.x.z, level, area / expected);
+  EXPECT_NEAR(area / expected, 1.0, 0.02);
+}
+
+TEST(Archimedes, NeutralDiskStaysPutAndLoadMatchesPressureIntegral) {
+  core::Comm comm;
+  const auto params = test_support::load_case(comm, "cases/neutral_disk/case.yaml");
+  coupling::Simulation sim(comm, params, "");
+  const auto start = sim.solids().at(0);
+  sim.run();
+  const auto end = sim.solids().at(0);
+  const double h = params.real("grid/cell_size"), r = 0.01, rho = 1000.0, g = 9.81;
+  const double drift = core::norm(end.x - start.x);
+  if (comm.is_root()) std::printf("neutral disk: drift %.3e m in 1 s (%.3f cells)\n", drift, drift / h);
+  EXPECT_LT(drift, 0.1 * h);
+
+  // J p against an independent quadrature of -int p n dl: 720 points on the circle, p from the
+  // fluid cell just outside each point, corrected hydrostatically to the point.
+  const auto load = sim.fluid_loads().at(0);
+  core::Vec2 integral;
+  const int n = 720;
+  for (int q = 0; q < n; ++q) {
+    const double phi = 2 * M_PI * (q + 0.5) / n;
+    const core::Vec2 nrm{std::cos(phi), std::sin(phi)};
+    const core::Vec2 on = end.x + r * nrm, out = on + 0.9 * h * nrm;
+    int i = static_cast<int>(std::floor(out.x / h)), k = static_cast<int>(std::floor(out.z / h));
+    const double zc = (k + 0.5) * h;
+    const double p = sim.pressure_at((i + 0.5) * h, zc) + rho * g * (zc - on.z);
+    integral -= (p * 2 * M_PI * r / n) * nrm;
+  }
+  const double buoyancy = rho * g * M_PI * r * r;
+  if (comm.is_root())
+    std::printf("neutral disk: J p = (%.5f, %.5f) N/m, boundary integral (%.5f, %.5f), rho g A = %.5f\n",
+                load.force.x, load.force.z, integral.x, integral.z, buoyancy);
+  EXPECT_NEAR(load.force.z, integral.z, 0.02 * buoyancy);
+  EXPECT_NEAR(load.force.x, integral.x, 0.02 * buoyancy);
+  EXPECT_NEAR(load.force.z, buoyancy, 0.02 * buoyancy);
+  EXPECT_NEAR(load.torque, 0.0, 1e-9);  // r x n = 0 on a circle
+}
+
+TEST(FixedObstacle, StillWaterStaysStillAndHydrostatic) {
+  core::Comm comm;
+  const auto params = test_support::load_case(comm, "cases/still_tank_obstacle/case.yaml");
+  coupling::Simulation sim(comm, params, "");
+  sim.run();
+  const double rho = 1000.0, g = 9.81, level = 0.1, h = params.real("grid/cell_size");
+  if (comm.is_root())
+    std::printf("still tank with obstacle: max particle speed %.3e m/s, grid %.3e m/s\n",
+                sim.diagnostics().max_speed, sim.max_grid_speed());
+  EXPECT_LT(sim.diagnostics().max_speed, 1e-3);
+  EXPECT_LT(sim.max_grid_speed(), 1e-3);
+  // Columns beside and above the block, at depths below the top quarter.
+  for (double x : {0.02 + 0.5 * h, 0.1 + 0.5 * h, 0.18 + 0.5 * h})
+    for (double depth : {0.03, 0.06, 0.09}) {
+      const int k = static_cast<int>((level - depth) / h);
+      const double z = (k + 0.5) * h;
+      if (x > 0.05 && x < 0.14 && z < 0.07) continue;  // inside or beside the block
+      const double expected = rho * g * (level - z);
+      EXPECT_NEAR(sim.pressure_at(x, z), expected, 0.01 * expected) << "x " << x << " z " << z;
+    }
+}
