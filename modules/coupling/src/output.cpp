@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 #include "picdem/core/log.hpp"
 #include "picdem/core/timer.hpp"
@@ -31,7 +32,9 @@ Output::Output(core::Comm comm, const core::Params& params, const grid::Decompos
   }
   comm_.barrier();
   if (params_.boolean("output/paraview"))
-    frames_writer_ = std::make_unique<io::FrameWriter>(dir_, d, append);
+    frames_writer_ = std::make_unique<io::FrameWriter>(
+        dir_, d, append,
+        resume ? resume->last_frame_step : std::numeric_limits<long long>::max());
   timeseries_ = std::make_unique<io::CsvWriter>(
       comm_, dir_ + "/timeseries.csv",
       std::vector<std::string>{"t", "dt", "step", "fluid_volume", "kinetic_energy",

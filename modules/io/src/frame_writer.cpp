@@ -1,5 +1,6 @@
 #include "picdem/io/frame_writer.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -103,7 +104,7 @@ const char* const kFrameClose = "      </Grid>";
 }  // namespace
 
 FrameWriter::FrameWriter(const std::string& directory, const grid::Decomposition& decomposition,
-                         bool continue_existing)
+                         bool continue_existing, long long keep_up_to_step)
     : directory_(directory), decomposition_(decomposition) {
   const core::Comm& comm = decomposition_.comm();
   std::string error;
@@ -125,6 +126,9 @@ FrameWriter::FrameWriter(const std::string& directory, const grid::Decomposition
         if (open && line == kFrameClose) open = nullptr;
       }
       if (open) entries_.pop_back();  // an unfinished block is not a frame
+      entries_.erase(std::remove_if(entries_.begin(), entries_.end(),
+                                    [&](const Entry& e) { return e.step > keep_up_to_step; }),
+                     entries_.end());
     }
   }
   error = comm.broadcast(error);

@@ -7,6 +7,7 @@
 // dataset.
 //
 // Coordinates: the paper's (x, z) plane is written as ParaView's (X, Y) with Z = 0.
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -35,10 +36,12 @@ struct Polylines {
 class FrameWriter {
  public:
   /// Collective. Creates `directory` and `directory/frames`. continue_existing = true keeps the
-  /// frames already indexed in an existing picdem.xdmf (a restart); frames at or after the step of
+  /// frames already indexed in an existing picdem.xdmf (a restart) up to step `keep_up_to_step`
+  /// (the restart step: later frames belong to the abandoned run); frames at or after the step of
   /// the next write() are dropped from the index then.
   FrameWriter(const std::string& directory, const grid::Decomposition& decomposition,
-              bool continue_existing = false);
+              bool continue_existing = false,
+              long long keep_up_to_step = std::numeric_limits<long long>::max());
 
   /// Collective. cell_fields: every rank passes the same names; the owned cells are written.
   void write(double t, long long step,
