@@ -456,15 +456,17 @@ void Simulation::run(long long max_steps) {
       s.output->frame(s.t, s.step, s.diag, s.particles, s.p, s.cells, s.dem.get(), s.obstacles, false);
     }
     progress.report(s.t, s.step, s.diag.dt, s.diag.ppe_iterations);
-    if (ck.directory.empty()) continue;
     const bool stop = s.comm.any(stop_signal_received());
-    const bool by_steps = ck.every_steps > 0 && s.step % ck.every_steps == 0;
-    const bool by_time = ck.every_seconds > 0.0 &&
-                         s.comm.max(core::wall_seconds() - wall_last_checkpoint) >= ck.every_seconds;
-    if (stop || by_steps || by_time) checkpoint();
+    if (!ck.directory.empty()) {
+      const bool by_steps = ck.every_steps > 0 && s.step % ck.every_steps == 0;
+      const bool by_time = ck.every_seconds > 0.0 &&
+          s.comm.max(core::wall_seconds() - wall_last_checkpoint) >= ck.every_seconds;
+      if (stop || by_steps || by_time) checkpoint();
+    }
     if (stop) {
-      core::log(s.comm, "picdem: stop signal: checkpoint written at step " +
-                            std::to_string(s.step) + ", stopping");
+      core::log(s.comm, "picdem: stop signal at step " + std::to_string(s.step) +
+                            (ck.directory.empty() ? ", no checkpoint directory" : ": checkpoint written") +
+                            ", stopping");
       s.stopped_by_signal = true;
       return;
     }

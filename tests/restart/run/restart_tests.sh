@@ -123,8 +123,8 @@ sigterm | sigusr1)
   wait $pid
   code=$?
   [ $code -eq 0 ] || fail "exit code $code after SIG$sig (expected 0): $(tail -3 "$W/B.log")"
-  grep -q "stop signal: checkpoint written at step" "$W/B.log" || fail "no checkpoint on SIG$sig"
-  stop=$(sed -n 's/.*checkpoint written at step \([0-9]*\).*/\1/p' "$W/B.log")
+  grep -q "stop signal at step [0-9]*: checkpoint written" "$W/B.log" || fail "no checkpoint on SIG$sig"
+  stop=$(sed -n 's/.*stop signal at step \([0-9]*\): checkpoint written.*/\1/p' "$W/B.log")
   [ "$stop" -lt 80 ] || fail "the signal arrived too late (step $stop)"
   "${launch[@]}" "$picdem" "${c[@]}" "${quiet[@]}" --max-steps 80 --restart latest -o "$W/B" \
     > "$W/B2.log" 2>&1 || fail "restart failed: $(tail -3 "$W/B2.log")"
