@@ -2,6 +2,7 @@
 # Restart tests of the picdem executable (doc/restart.md). Each test runs in its own folder.
 # usage: restart_tests.sh PICDEM SOURCE_DIR WORK_DIR PYTHON TEST [TEST ARGS] -- MPIEXEC...
 #   TEST: bitwise N CASE | ranks N M | kill_during_write | sigterm | sigusr1 | bad_files | blow_up
+#         | schedule
 set -u
 picdem=$1 src=$2 work=$3 python=$4 test=$5
 shift 5
@@ -203,6 +204,21 @@ EOF
   [ $code -eq 3 ] || fail "overlap: exit code $code, expected 3: $(tail -3 "$W/C.log")"
   grep -q "the run stopped: step 1 at t = .*solid 0 lies inside solid 1" "$W/C.log" ||
     fail "no overlap diagnostic: $(tail -3 "$W/C.log")"
+  ;;
+schedule)
+  # every_seconds (tiny: after every step) with keep = 3 leaves exactly the newest three; a fresh
+  # run in the same folder removes them first; every_steps = 4 with at_end writes 4, 8 and 10.
+  read -r -a c <<< "$(case_args floating_disk)"
+  "$picdem" "${c[@]}" --set checkpoint/every_seconds=1e-9 --set checkpoint/keep=3 --max-steps 6 \
+    -o "$W/A" > "$W/A.log" 2>&1 || fail "run failed"
+  got=$(ls "$W/A/checkpoints" | tr '\n' ' ')
+  [ "$got" = "checkpoint_00000004.h5 checkpoint_00000005.h5 checkpoint_00000006.h5 " ] ||
+    fail "every_seconds/keep left: $got"
+  "$picdem" "${c[@]}" --set checkpoint/every_steps=4 --set checkpoint/keep=5 --max-steps 10 \
+    -o "$W/A" > "$W/A.log" 2>&1 || fail "second run failed"
+  got=$(ls "$W/A/checkpoints" | tr '\n' ' ')
+  [ "$got" = "checkpoint_00000004.h5 checkpoint_00000008.h5 checkpoint_00000010.h5 " ] ||
+    fail "every_steps/at_end left: $got"
   ;;
 *)
   fail "unknown test $test"
