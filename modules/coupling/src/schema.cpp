@@ -30,6 +30,13 @@ void declare_parameters(core::ParamSchema& s) {
   s.boolean("output/paraview", true, "write XDMF + HDF5 frames");
   s.boolean("output/png", true, "write a PNG picture with every frame");
   s.integer("output/png_width", 1000, "width of the PNG pictures [pixels]").at_least(64).at_most(8000);
+  s.reals("output/level_probes", {},
+          "x positions [m] whose free-surface height is recorded in timeseries.csv (level_1, ...)")
+      .size(0, 32);
+  s.reals("output/solid_count_box", {},
+          "[x_min, x_max, z_min, z_max] [m]: solids whose centre is inside are counted in "
+          "timeseries.csv (solids_in_box); empty: no count")
+      .size(0, 4);
   s.real("output/progress_seconds", 5.0, "wall seconds between progress lines").non_negative();
 
   s.section("free_surface", "The free surface from the particles (doc/coupling.md).");
@@ -62,6 +69,11 @@ void declare_parameters(core::ParamSchema& s) {
   level.real("z", 0.1, "still-water level [m]");
 
   s.check([](const core::Params& p, std::vector<std::string>& errors) {
+    const auto count_box = p.reals("output/solid_count_box");
+    if (!count_box.empty() && (count_box.size() != 4 || !(count_box[0] < count_box[1]) ||
+                               !(count_box[2] < count_box[3])))
+      errors.push_back("key 'output/solid_count_box' must be empty or [x_min, x_max, z_min, z_max] "
+                       "with min < max");
     const auto o = p.reals("grid/origin");
     const double x0 = o[0], z0 = o[1];
     const double x1 = x0 + p.real("grid/length"), z1 = z0 + p.real("grid/height");

@@ -301,6 +301,25 @@ void advect_particles(SimulationState& s, double dt) {
                     reject);
 }
 
+// Highest crossing of S = 1/2 from fluid below to air above in the column holding x.
+double surface_height(const SimulationState& s, double x) {
+  if (!s.has_fluid) return std::nan("");
+  int i, k;
+  s.spec.cell_of({x, s.spec.origin.z}, i, k);
+  const auto own = s.decomp->owned_cells();
+  double best = -std::numeric_limits<double>::infinity();
+  if (i >= own.i0 && i < own.i1)
+    for (int kk = own.k0; kk < own.k1; ++kk) {
+      const double below = s.occupancy(i, kk), above = s.occupancy(i, kk + 1);
+      if (kk + 1 >= s.spec.nz || !(below > 0.5) || above > 0.5) continue;
+      // S = 1/2 between the two centres, linearly
+      const double z0 = s.spec.position(Stagger::Cell, i, kk).z;
+      best = std::max(best, z0 + s.spec.h * (below - 0.5) / (below - above));
+    }
+  best = s.comm.max(best);
+  return std::isfinite(best) ? best : std::nan("");
+}
+
 // Figures of the new state; a non-finite value anywhere stops the run on every rank.
 void record_diagnostics(SimulationState& s, double dt) {
   Diagnostics& g = s.diag;
@@ -339,6 +358,14 @@ void record_diagnostics(SimulationState& s, double dt) {
                        s.particle_cfg.per_cell_1d * s.particle_cfg.per_cell_1d, s.occupancy);
     g.fluid_volume = occupied_area(s.occupancy, *s.decomp, s.comm);
   }
+  g.levels.clear();
+  for (double x : s.params.reals("output/level_probes")) g.levels.push_back(surface_height(s, x));
+  const auto box = s.params.reals("output/solid_count_box");
+  long long inside = 0;
+  if (s.dem && box.size() == 4)
+    for (const auto& st : s.dem->owned())
+      inside += st.x.x >= box[0] && st.x.x <= box[1] && st.x.z >= box[2] && st.x.z <= box[3];
+  g.solids_in_box = s.comm.sum(inside);
 }
 
 }  // namespace
@@ -393,24 +420,7 @@ std::vector<core::SolidState> Simulation::solids() const {
   return s_->dem ? s_->dem->gather_all() : std::vector<core::SolidState>{};
 }
 
-double Simulation::surface_height(double x) const {
-  const SimulationState& s = *s_;
-  if (!s.has_fluid) return std::nan("");
-  int i, k;
-  s.spec.cell_of({x, s.spec.origin.z}, i, k);
-  const auto own = s.decomp->owned_cells();
-  double best = -std::numeric_limits<double>::infinity();
-  if (i >= own.i0 && i < own.i1)
-    for (int kk = own.k0; kk < own.k1; ++kk) {
-      const double below = s.occupancy(i, kk), above = s.occupancy(i, kk + 1);
-      if (kk + 1 >= s.spec.nz || !(below > 0.5) || above > 0.5) continue;
-      // S = 1/2 between the two centres, linearly
-      const double z0 = s.spec.position(Stagger::Cell, i, kk).z;
-      best = std::max(best, z0 + s.spec.h * (below - 0.5) / (below - above));
-    }
-  best = s.comm.max(best);
-  return std::isfinite(best) ? best : std::nan("");
-}
+double Simulation::surface_height(double x) const { return coupling::surface_height(*s_, x); }
 
 double Simulation::max_contact_overlap() const {
   const SimulationState& s = *s_;

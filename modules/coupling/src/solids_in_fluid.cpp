@@ -172,10 +172,14 @@ void rigid_face_velocities(const SolidScene& scene, const geometry::CutCells& cu
     const auto& st = scene.states[static_cast<std::size_t>(body)];
     return st.v + core::cross(st.omega, x - st.x);
   };
+  // The body covering either cell beside a face (cells outside the window count as uncovered).
   auto covering = [&](int i0, int k0, int i1, int k1, bool& any) {
-    int b = cut.cutting_body(i0, k0);
-    if (b < 0) b = cut.cutting_body(i1, k1);
-    any = b >= 0 || cut.cutting_obstacle(i0, k0) >= 0 || cut.cutting_obstacle(i1, k1) >= 0;
+    const auto& win = cut.window.cells;
+    const bool in0 = win.contains(i0, k0), in1 = win.contains(i1, k1);
+    int b = in0 ? cut.cutting_body(i0, k0) : -1;
+    if (b < 0 && in1) b = cut.cutting_body(i1, k1);
+    any = b >= 0 || (in0 && cut.cutting_obstacle(i0, k0) >= 0) ||
+          (in1 && cut.cutting_obstacle(i1, k1) >= 0);
     return b;
   };
   const auto bu = u.storage();
