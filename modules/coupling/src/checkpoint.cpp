@@ -135,7 +135,8 @@ std::string code_version() {
 
 bool key_may_change_on_restart(const std::string& path) {
   auto under = [&](const std::string& section) { return path.rfind(section + "/", 0) == 0; };
-  return path == "time/end" || under("output") || under("checkpoint") || under("solver");
+  return path == "time/end" || path == "grid/ranks_x" || path == "grid/ranks_z" ||
+         under("output") || under("checkpoint") || under("solver");
 }
 
 namespace {
@@ -431,7 +432,8 @@ Output::Mark read_checkpoint(SimulationState& s, const std::string& path) {
   if (!diff.empty()) {
     std::string m = where + " belongs to another case; these keys differ (checkpoint -> now):";
     for (const auto& d : diff) m += "\n  " + d;
-    m += "\nonly time/end, output/*, checkpoint/* and solver/* may change on restart";
+    m += "\nonly time/end, grid/ranks_x, grid/ranks_z, output/*, checkpoint/* and solver/* may "
+         "change on restart";
     throw core::InputError(m);
   }
   if ((in.attribute_int("has_fluid") != 0) != s.has_fluid)
@@ -445,13 +447,35 @@ Output::Mark read_checkpoint(SimulationState& s, const std::string& path) {
     mark.next_frame = in.attribute_double("output_next_frame");
     mark.frames = in.attribute_int("output_frames");
     mark.last_frame_step = in.attribute_int("output_last_frame_step");
+  });
 
-    const bool same_ranks = in.written_ranks() == comm.size();
-    // Particles: this rank's slice in its order, or an even share sent on to the owners.
+  // Same layout: the same rank count and every rank's boxes as written (the decomposition depends
+  // on the rank count and grid/ranks_x, grid/ranks_z). Then each rank takes its own slices back
+  // unchanged (bitwise); otherwise particles go by even shares to their owners and the grid
+  // arrays are put together again.
+  std::vector<int> boxes_all;
+  bool mine_same = in.written_ranks() == comm.size();
+  on_all_ranks(comm, [&] {
+    if (!s.has_fluid) return;
+    boxes_all = in.read_range_int("grid/boxes", 0, in.length("grid/boxes"));
+    if (boxes_all.size() != 24u * static_cast<std::size_t>(in.written_ranks()))
+      throw core::InputError(where + ": grid/boxes has " + std::to_string(boxes_all.size()) +
+                             " numbers for " + std::to_string(in.written_ranks()) +
+                             " ranks (corrupted)");
+    if (!mine_same) return;
+    std::vector<int> mine;
+    for (const auto* f : {&s.u, &s.w, &s.p})
+      push_box(mine, f->storage()), push_box(mine, f->owned());
+    mine_same = std::equal(mine.begin(), mine.end(), boxes_all.begin() + 24 * comm.rank());
+  });
+  const bool same_layout = !comm.any(!mine_same);
+
+  on_all_ranks(comm, [&] {
     long long begin = 0, end = 0;
-    if (!same_ranks) io::even_split(in.length("particles/x"), comm.rank(), comm.size(), begin, end);
+    if (!same_layout)
+      io::even_split(in.length("particles/x"), comm.rank(), comm.size(), begin, end);
     auto reals = [&](const std::string& name) {
-      return same_ranks ? in.read_slice_double(name) : in.read_range_double(name, begin, end);
+      return same_layout ? in.read_slice_double(name) : in.read_range_double(name, begin, end);
     };
     auto& P = s.particles;
     P.x = reals("particles/x");
@@ -462,8 +486,8 @@ Output::Mark read_checkpoint(SimulationState& s, const std::string& path) {
     P.cxz = reals("particles/cxz");
     P.czx = reals("particles/czx");
     P.czz = reals("particles/czz");
-    P.id = same_ranks ? in.read_slice_int64("particles/id")
-                      : in.read_range_int64("particles/id", begin, end);
+    P.id = same_layout ? in.read_slice_int64("particles/id")
+                       : in.read_range_int64("particles/id", begin, end);
     const std::size_t n = P.x.size();
     for (const auto* v : {&P.z, &P.u, &P.w, &P.cxx, &P.cxz, &P.czx, &P.czz})
       if (v->size() != n)
@@ -471,47 +495,35 @@ Output::Mark read_checkpoint(SimulationState& s, const std::string& path) {
     if (P.id.size() != n)
       throw core::InputError(where + ": the particle arrays differ in length (corrupted)");
     P.spec = s.spec;
-
-    if (s.has_fluid) {
-      const auto boxes_all = in.read_range_int("grid/boxes", 0, in.length("grid/boxes"));
-      bool same_layout = same_ranks && boxes_all.size() == 24u * comm.size();
-      if (same_layout) {
-        std::vector<int> mine;
-        for (const auto* f : {&s.u, &s.w, &s.p})
-          push_box(mine, f->storage()), push_box(mine, f->owned());
-        same_layout = std::equal(mine.begin(), mine.end(), boxes_all.begin() + 24 * comm.rank());
-      }
-      if (same_layout) {
-        auto exact = [&](const std::string& name, std::vector<double>& dst) {
-          auto v = in.read_slice_double(name);
-          if (v.size() != dst.size())
-            throw core::InputError(where + ": " + name + " does not match the grid (corrupted)");
-          dst = std::move(v);
-        };
-        exact("grid/u", s.u.data());
-        exact("grid/w", s.w.data());
-        exact("grid/p", s.p.data());
-        const auto cells = in.read_slice_int("grid/cells");
-        if (cells.size() != s.cells.data().size())
-          throw core::InputError(where + ": grid/cells does not match the grid (corrupted)");
-        std::copy(cells.begin(), cells.end(), s.cells.data().begin());
-      } else {
-        auto real_range = [&](const std::string& name, long long b, long long e) {
-          return in.read_range_double(name, b, e);
-        };
-        auto int_range = [&](const std::string& name, long long b, long long e) {
-          return in.read_range_int(name, b, e);
-        };
-        restore_grid(in, "grid/u", boxes_all, 0, s.u, real_range);
-        restore_grid(in, "grid/w", boxes_all, 1, s.w, real_range);
-        restore_grid(in, "grid/p", boxes_all, 2, s.p, real_range);
-        restore_grid(in, "grid/cells", boxes_all, 2, s.cells, int_range);
-      }
+    if (!s.has_fluid) return;
+    if (same_layout) {
+      auto exact = [&](const std::string& name, std::vector<double>& dst) {
+        auto v = in.read_slice_double(name);
+        if (v.size() != dst.size())
+          throw core::InputError(where + ": " + name + " does not match the grid (corrupted)");
+        dst = std::move(v);
+      };
+      exact("grid/u", s.u.data());
+      exact("grid/w", s.w.data());
+      exact("grid/p", s.p.data());
+      const auto cells = in.read_slice_int("grid/cells");
+      if (cells.size() != s.cells.data().size())
+        throw core::InputError(where + ": grid/cells does not match the grid (corrupted)");
+      std::copy(cells.begin(), cells.end(), s.cells.data().begin());
+    } else {
+      auto real_range = [&](const std::string& name, long long b, long long e) {
+        return in.read_range_double(name, b, e);
+      };
+      auto int_range = [&](const std::string& name, long long b, long long e) {
+        return in.read_range_int(name, b, e);
+      };
+      restore_grid(in, "grid/u", boxes_all, 0, s.u, real_range);
+      restore_grid(in, "grid/w", boxes_all, 1, s.w, real_range);
+      restore_grid(in, "grid/p", boxes_all, 2, s.p, real_range);
+      restore_grid(in, "grid/cells", boxes_all, 2, s.cells, int_range);
     }
   });
-
-  if (!s.has_fluid) s.particles.spec = s.spec;
-  if (in.written_ranks() != comm.size() && s.has_fluid) particles::migrate(s.particles, *s.decomp);
+  if (!same_layout && s.has_fluid) particles::migrate(s.particles, *s.decomp);
 
   if (s.dem) {
     dem::DemSolver::Snapshot snap;

@@ -48,7 +48,8 @@ void open_checkpoint_directory(const core::Comm& comm, const std::string& direct
 /// PROJECT_VERSION, plus `git describe` at configure time when it was available.
 std::string code_version();
 
-/// Keys allowed to differ between a checkpoint's case and the restarted case.
+/// Keys allowed to differ between a checkpoint's case and the restarted case: time/end, the rank
+/// layout (grid/ranks_x, grid/ranks_z), output/*, checkpoint/*, solver/*.
 bool key_may_change_on_restart(const std::string& path);
 /// The keys (outside key_may_change_on_restart) whose values differ between the two resolved
 /// cases, each as "key: stored -> current" ("(absent)" where one side lacks it).
