@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Surge front of a dam-break run against Martin & Moyce (1952).
 
 usage: surge_front.py TIMESERIES.csv [--out front.png] [--a 0.05715] [--label text] [more.csv ...]

@@ -74,6 +74,11 @@ void declare_parameters(core::ParamSchema& s) {
                                !(count_box[2] < count_box[3])))
       errors.push_back("key 'output/solid_count_box' must be empty or [x_min, x_max, z_min, z_max] "
                        "with min < max");
+    // Solids and water must feel the same gravity.
+    if (!p.sublist_names("water").empty() && !p.sublist_names("solids").empty() &&
+        p.reals("dem/gravity") != p.reals("fluid/gravity"))
+      errors.push_back("keys 'dem/gravity' and 'fluid/gravity' differ; with water and solids in "
+                       "one case they must be the same");
     const auto o = p.reals("grid/origin");
     const double x0 = o[0], z0 = o[1];
     const double x1 = x0 + p.real("grid/length"), z1 = z0 + p.real("grid/height");

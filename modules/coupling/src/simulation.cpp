@@ -142,9 +142,11 @@ namespace {
 double choose_time_step(SimulationState& s) {
   const double dt_max = std::min(s.params.real("time/dt_max"), s.t_end - s.t);
   if (!s.has_fluid) return dt_max;
-  const double dt =
-      std::min(dt_max, fluid::cfl_time_step(s.u, s.w, s.spec.h, s.params.real("time/cfl"),
-                                            s.params.real("time/dt_max"), s.comm));
+  // The particles may outrun the grid (FLIP): the fastest of either sets the CFL limit.
+  const double cfl = s.params.real("time/cfl");
+  double dt = std::min(dt_max, fluid::cfl_time_step(s.u, s.w, s.spec.h, cfl,
+                                                    s.params.real("time/dt_max"), s.comm));
+  if (s.diag.max_speed > 0.0) dt = std::min(dt, cfl * s.spec.h / s.diag.max_speed);
   if (!(dt >= s.params.real("time/dt_min")) && s.t_end - s.t > s.params.real("time/dt_min")) {
     std::ostringstream m;
     m << "step " << s.step << " at t = " << s.t << " s: the time step fell to " << dt
@@ -270,10 +272,21 @@ void advance_solids(SimulationState& s, double dt) {
 // transfer: grid -> particles (FLIP/PIC blend or APIC), then gap damping (eq. 20).
 void grid_to_particles(SimulationState& s) {
   core::ScopedTimer timer("transfer: grid to particles");
-  // Faces closed by solids carry the solids' new rigid velocities.
+  // Faces closed by solids carry the solids' new rigid velocities, in u_old as well: the FLIP
+  // increment u - u_old is the fluid's change only, not a body sweeping over a face.
   s.scene = scene_of(s.dem.get(), s.obstacles);
   extend(s, s.u, s.w);
   fluid::enforce_walls(s.u, s.w, s.fluid_cfg, *s.decomp);
+  if (!s.scene.placements.empty() || !s.scene.obstacles.empty()) {
+    const auto& spec = s.spec;
+    const auto bu = s.u.storage(), bw = s.w.storage();
+    for (int k = bu.k0; k < bu.k1; ++k)
+      for (int i = bu.i0; i < bu.i1; ++i)
+        if (i > 0 && i < spec.nx && s.apertures.E_x(i, k) <= 0.0) s.u_old(i, k) = s.u(i, k);
+    for (int k = bw.k0; k < bw.k1; ++k)
+      for (int i = bw.i0; i < bw.i1; ++i)
+        if (k > 0 && k < spec.nz && s.apertures.E_z(i, k) <= 0.0) s.w_old(i, k) = s.w(i, k);
+  }
   particles::from_grid(s.particles, s.particle_cfg, s.u_old, s.w_old, s.u, s.w, s.spec);
   if (s.dem && s.beta < 1.0)
     damp_gap_particles(s.particles, all_contacts(*s.dem, s.comm), s.spec.h, s.beta);
