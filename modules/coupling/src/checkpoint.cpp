@@ -1,8 +1,5 @@
 #include "picdem/coupling/checkpoint.hpp"
 
-#include <Teuchos_ParameterList.hpp>
-#include <Teuchos_YamlParameterListCoreHelpers.hpp>
-
 #include <algorithm>
 #include <chrono>
 #include <csignal>
@@ -141,30 +138,53 @@ bool key_may_change_on_restart(const std::string& path) {
 
 namespace {
 
-void flatten(const Teuchos::ParameterList& list, const std::string& prefix,
-             std::map<std::string, std::string>& out) {
-  for (auto it = list.begin(); it != list.end(); ++it) {
-    const std::string path = prefix + list.name(it);
-    const Teuchos::ParameterEntry& e = list.entry(it);
-    if (e.isList()) {
-      flatten(Teuchos::getValue<Teuchos::ParameterList>(e), path + "/", out);
-    } else {
-      std::ostringstream v;
-      v << e.getAny(false);
-      out[path] = v.str();
-    }
-  }
-}
-
+// The resolved case as "section/key" -> value text, read from the YAML that Params::to_yaml()
+// writes (Teuchos' writer: one key per line, two spaces per level, sublists as "name: " lines,
+// arrays inline). Reading the text, not parsing it, keeps values that Teuchos' own reader refuses
+// (empty arrays) comparable; both sides come from the same writer, so equal values print equally.
 std::map<std::string, std::string> flat_case(const std::string& yaml, const std::string& source) {
   std::map<std::string, std::string> out;
-  Teuchos::RCP<Teuchos::ParameterList> list;
-  try {
-    list = Teuchos::getParametersFromYamlString(yaml);
-  } catch (const std::exception& e) {
-    throw core::InputError(source + " is not readable YAML (corrupted): " + e.what());
+  std::vector<std::pair<std::size_t, std::string>> open;  // indentation, sublist name
+  std::istringstream in(yaml);
+  std::string line;
+  bool root = false;
+  while (std::getline(in, line)) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const std::size_t indent = line.find_first_not_of(' ');
+    if (indent == std::string::npos || line[indent] == '%' || line.compare(indent, 3, "---") == 0 ||
+        line.compare(indent, 3, "...") == 0)
+      continue;
+    // the key: up to the first ':' outside quotes that ends the line or precedes a space
+    std::size_t colon = std::string::npos;
+    char quote = 0;
+    for (std::size_t c = indent; c < line.size() && colon == std::string::npos; ++c) {
+      if (quote) {
+        if (line[c] == quote) quote = 0;
+      } else if (line[c] == '\'' || line[c] == '"') {
+        quote = line[c];
+      } else if (line[c] == ':' && (c + 1 == line.size() || line[c + 1] == ' ')) {
+        colon = c;
+      }
+    }
+    if (colon == std::string::npos)
+      throw core::InputError(source + " is not a resolved case (corrupted): line '" + line + "'");
+    const std::string key = line.substr(indent, colon - indent);
+    std::string value = line.substr(colon + 1);
+    value.erase(0, std::min(value.find_first_not_of(' '), value.size()));
+    while (!open.empty() && open.back().first >= indent) open.pop_back();
+    if (!root) {  // the writer's top level: the list's own name
+      root = true;
+      open.emplace_back(indent, "");
+      continue;
+    }
+    std::string path;
+    for (std::size_t n = 1; n < open.size(); ++n) path += open[n].second + "/";
+    if (value.empty())
+      open.emplace_back(indent, key);
+    else
+      out[path + key] = value;
   }
-  flatten(*list, "", out);
+  if (out.empty()) throw core::InputError(source + " holds no parameters (corrupted)");
   return out;
 }
 
@@ -172,7 +192,6 @@ std::map<std::string, std::string> flat_case(const std::string& yaml, const std:
 
 std::vector<std::string> case_differences(const std::string& stored_yaml,
                                           const core::Params& current) {
-  // Both sides pass through the same YAML writer and parser, so equal values print equally.
   const auto a = flat_case(stored_yaml, "the checkpoint's case");
   const auto b = flat_case(current.to_yaml(), "the current case");
   std::vector<std::string> diff;
