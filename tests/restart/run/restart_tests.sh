@@ -25,12 +25,12 @@ expect_ok() { [ "$1" -eq 0 ] || { tail -20 "$2.log"; fail "$2: exit code $1"; };
 floating_disk=(cases/floating_disk/case.yaml --set grid/cell_size=0.002 --set output/png=false
                --set output/interval=0.005)
 disks=(tests/restart/run/disks_in_water.yaml)
-# the fall pipe at reduced resolution (twice its cell size), once cases/fall_pipe_continuous exists
+# the fall pipe at reduced resolution (three times its cell size), once cases/fall_pipe_continuous exists
 fall_pipe() {
   local f=cases/fall_pipe_continuous/case.yaml
   local h
   h=$(sed -n 's/^ *cell_size: *\([0-9.eE+-]*\).*/\1/p' "$f" | head -1)
-  echo "$f --set output/png=false --set grid/cell_size=$(awk "BEGIN{print 2*$h}")"
+  echo "$f --set output/png=false --set grid/cell_size=$(awk "BEGIN{print 3*$h}")"
 }
 case_args() {  # name -> the case file and its overrides
   case $1 in
