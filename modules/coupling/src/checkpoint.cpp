@@ -236,8 +236,9 @@ bool stop_signal_received() {
 // ---------------------------------------------------------------------------------------------
 // The state <-> the file. Layout (doc/restart.md):
 //   attributes: format_version, code_version, case_yaml, t, step, ranks, has_fluid,
-//               diagnostics (Diagnostics in declaration order), output_next_frame,
-//               output_frames, output_last_frame_step
+//               diagnostics (the scalars of Diagnostics in declaration order),
+//               diagnostics_solids_in_box, diagnostics_levels (when there are probes),
+//               output_next_frame, output_frames, output_last_frame_step
 //   particles/{x,z,u,w,cxx,cxz,czx,czz} (double), particles/id (int64): every rank's particles
 //               in their order
 //   grid/{u,w,p} (double), grid/cells (int): every rank's storage box (owned + halo), row-major
@@ -317,6 +318,8 @@ void write_checkpoint(const SimulationState& s, const std::string& path, const O
   out.attribute("ranks", static_cast<long long>(s.comm.size()));
   out.attribute("has_fluid", static_cast<long long>(s.has_fluid ? 1 : 0));
   out.attribute("diagnostics", diagnostics_vector(s.diag));
+  out.attribute("diagnostics_solids_in_box", s.diag.solids_in_box);
+  if (!s.diag.levels.empty()) out.attribute("diagnostics_levels", s.diag.levels);
   out.attribute("output_next_frame", mark.next_frame);
   out.attribute("output_frames", mark.frames);
   out.attribute("output_last_frame_step", mark.last_frame_step);
@@ -463,6 +466,10 @@ Output::Mark read_checkpoint(SimulationState& s, const std::string& path) {
     s.t = in.attribute_double("t");
     s.step = in.attribute_int("step");
     s.diag = diagnostics_from(in.attribute_doubles("diagnostics"), path);
+    if (in.has_attribute("diagnostics_solids_in_box"))
+      s.diag.solids_in_box = in.attribute_int("diagnostics_solids_in_box");
+    if (in.has_attribute("diagnostics_levels"))
+      s.diag.levels = in.attribute_doubles("diagnostics_levels");
     mark.next_frame = in.attribute_double("output_next_frame");
     mark.frames = in.attribute_int("output_frames");
     mark.last_frame_step = in.attribute_int("output_last_frame_step");

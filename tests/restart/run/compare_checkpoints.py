@@ -4,8 +4,8 @@
 usage: compare_checkpoints.py A.h5 B.h5 bitwise
        compare_checkpoints.py A.h5 B.h5 close RTOL ATOL_POSITION
 
-bitwise: both files were written on the same number of ranks; every dataset and the state
-attributes must be identical bit for bit.
+bitwise: both files were written on the same number of ranks; every dataset and every attribute
+must be identical bit for bit.
 close:   the files may come from different rank counts; particles are matched by id (the same set
 of ids is required), grid fields are put together from every rank's owned box, solids by id.
 Positions and velocities must agree within ATOL_POSITION (m, m/s), pressure within RTOL relative
@@ -16,10 +16,6 @@ import sys
 import h5py
 import numpy as np
 
-STATE_ATTRIBUTES = ["format_version", "case_yaml", "t", "step", "has_fluid", "diagnostics",
-                    "output_next_frame", "output_frames", "output_last_frame_step"]
-
-
 def datasets(f):
     out = {}
     f.visititems(lambda name, obj: out.__setitem__(name, obj[()]) if isinstance(obj, h5py.Dataset)
@@ -29,7 +25,10 @@ def datasets(f):
 
 def bitwise(a, b):
     ok = True
-    for key in STATE_ATTRIBUTES:
+    if sorted(a.attrs) != sorted(b.attrs):
+        print("the attributes differ:", sorted(set(a.attrs) ^ set(b.attrs)))
+        return False
+    for key in sorted(a.attrs):
         x, y = a.attrs[key], b.attrs[key]
         if not np.array_equal(np.asarray(x), np.asarray(y)):
             print(f"attribute {key} differs: {x!r} vs {y!r}"[:400])
@@ -44,7 +43,8 @@ def bitwise(a, b):
             diff = "shape" if x.shape != y.shape else f"max |diff| {np.max(np.abs(x - y))}"
             print(f"dataset {name} differs ({diff})")
             ok = False
-    print(f"compared {len(da)} datasets bitwise: {'identical' if ok else 'DIFFERENT'}")
+    print(f"compared {len(da)} datasets and {len(a.attrs)} attributes bitwise: "
+          f"{'identical' if ok else 'DIFFERENT'}")
     return ok
 
 
