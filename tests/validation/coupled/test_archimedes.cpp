@@ -18,37 +18,53 @@ double submerged_segment_area(double r, double centre_above_level) {
 }
 }  // namespace
 
+// A floating body heaves about its equilibrium with little damping: the draft and the submerged
+// area are time means over the second half of the run (several heave periods of ~0.2 s).
 TEST(Archimedes, FloatingBoxSettlesAtItsDraft) {
   core::Comm comm;
   const auto params = test_support::load_case(comm, "cases/floating_box/case.yaml");
   coupling::Simulation sim(comm, params, "");
-  sim.run();
-  const double h = params.real("grid/cell_size"), H = 0.02, expected = 0.5 * H;  // rho_s/rho_f H
-  const auto box = sim.solids().at(0);
-  const double level = sim.surface_height(0.02);  // far from the box
-  const double bottom = box.x.z - 0.5 * H * std::cos(box.theta) - 0.02 * std::abs(std::sin(box.theta));
-  const double draft = level - bottom;
+  const double h = params.real("grid/cell_size"), H = 0.02, W = 0.04, expected = 0.5 * H;
+  const double t_end = params.real("time/end");
+  double sum = 0.0, worst_tilt = 0.0;
+  int n = 0;
+  while (sim.time() < t_end - 1e-12) {
+    sim.step();
+    if (sim.time() < 0.5 * t_end) continue;
+    const auto box = sim.solids().at(0);
+    const double level = sim.surface_height(0.02);  // far from the box
+    const double bottom = box.x.z - 0.5 * H * std::cos(box.theta) - 0.5 * W * std::abs(std::sin(box.theta));
+    sum += level - bottom;
+    ++n;
+    worst_tilt = std::max(worst_tilt, std::abs(box.theta));
+  }
+  const double draft = sum / n;
   if (comm.is_root())
-    std::printf("floating box: level %.5f m, draft %.5f m (expected %.5f), tilt %.2e rad, |v| %.2e m/s\n",
-                level, draft, expected, box.theta, core::norm(box.v));
+    std::printf("floating box: mean draft %.5f m over the second half (expected %.5f, %.2f cells off), "
+                "largest tilt %.2e rad\n", draft, expected, (draft - expected) / h, worst_tilt);
   EXPECT_NEAR(draft, expected, 0.25 * h);
-  EXPECT_LT(std::abs(box.theta), 0.05);
+  EXPECT_LT(worst_tilt, 0.05);
 }
 
 TEST(Archimedes, FloatingDiskHalfSubmerged) {
   core::Comm comm;
   const auto params = test_support::load_case(comm, "cases/floating_disk/case.yaml");
   coupling::Simulation sim(comm, params, "");
-  sim.run();
-  const double r = 0.01;
-  const auto disk = sim.solids().at(0);
-  const double level = sim.surface_height(0.015);
-  const double area = submerged_segment_area(r, disk.x.z - level);
+  const double r = 0.01, t_end = params.real("time/end");
+  double sum = 0.0;
+  int n = 0;
+  while (sim.time() < t_end - 1e-12) {
+    sim.step();
+    if (sim.time() < 0.5 * t_end) continue;
+    const auto disk = sim.solids().at(0);
+    sum += submerged_segment_area(r, disk.x.z - sim.surface_height(0.015));
+    ++n;
+  }
   const double expected = 0.5 * M_PI * r * r;  // (rho_s / rho_f) pi r^2
   if (comm.is_root())
-    std::printf("floating disk: centre %.5f m, level %.5f m, submerged area / expected = %.4f\n",
-                disk.x.z, level, area / expected);
-  EXPECT_NEAR(area / expected, 1.0, 0.02);
+    std::printf("floating disk: mean submerged area / expected = %.4f over the second half\n",
+                sum / n / expected);
+  EXPECT_NEAR(sum / n / expected, 1.0, 0.02);
 }
 
 TEST(Archimedes, NeutralDiskStaysPutAndLoadMatchesPressureIntegral) {
