@@ -310,8 +310,20 @@ void advect_particles(SimulationState& s, double dt) {
   particles::count_per_cell(s.particles, *s.halo, s.count);
   std::function<bool(Vec2)> reject;
   if (solids) reject = [&](Vec2 p) { return locator.inside(p); };
-  particles::reseed(s.particles, s.particle_cfg, *s.decomp, s.count, s.cells, s.u, s.w, s.step,
-                    reject);
+  // A cut cell holds fewer particles than a full one (its fluid part is smaller): reseeding it up
+  // to particles/min_per_cell would add water every step. Cut cells are left out of reseeding.
+  const fluid::CellStates* reseed_cells = &s.cells;
+  fluid::CellStates uncut;
+  if (solids) {
+    uncut = s.cells;
+    const auto b = uncut.storage();
+    for (int k = b.k0; k < b.k1; ++k)
+      for (int i = b.i0; i < b.i1; ++i)
+        if (s.cut.fluid_fraction(i, k) < 1.0) uncut(i, k) = static_cast<signed char>(CellState::Solid);
+    reseed_cells = &uncut;
+  }
+  particles::reseed(s.particles, s.particle_cfg, *s.decomp, s.count, *reseed_cells, s.u, s.w,
+                    s.step, reject);
 }
 
 // Highest crossing of S = 1/2 from fluid below to air above in the column holding x.
