@@ -305,7 +305,21 @@ void advect_particles(SimulationState& s, double dt) {
       for (int pass = 0; pass < 3 && locator.inside({x, z}, &q, &n); ++pass)
         x = q.x + 0.1 * h * n.x, z = q.z + 0.1 * h * n.z;
     };
-  particles::advect(s.particles, s.particle_cfg, s.u, s.w, s.spec, dt, out_of_solids);
+  // A blown-up advection is found on one rank: stop every rank with the message, never just one.
+  std::string failure;
+  try {
+    particles::advect(s.particles, s.particle_cfg, s.u, s.w, s.spec, dt, out_of_solids);
+  } catch (const core::SolverError& e) {
+    failure = e.what();
+  }
+  if (s.comm.any(!failure.empty())) {
+    std::string first = failure;
+    for (int r = 0; r < s.comm.size(); ++r) {
+      const std::string theirs = s.comm.broadcast(failure, r);
+      if (first.empty() && !theirs.empty()) first = theirs;
+    }
+    throw core::SolverError(first);
+  }
   particles::migrate(s.particles, *s.decomp);
   particles::count_per_cell(s.particles, *s.halo, s.count);
   std::function<bool(Vec2)> reject;
