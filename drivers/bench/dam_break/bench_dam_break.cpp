@@ -51,16 +51,24 @@ int main(int argc, char** argv) {
       its += sim.diagnostics().ppe_iterations;
     }
     const auto t = picdem::core::timer_totals();
+    // The step's phases are the top-level timers; "fluid: ...", "particles: ...", "dem: ...",
+    // "io: ..." are inside them.
+    auto nested = [](const std::string& name) {
+      for (const char* p : {"fluid:", "particles:", "dem:", "io:", "checkpoint:"})
+        if (name.rfind(p, 0) == 0) return true;
+      return false;
+    };
     double total = 0.0;
-    for (const auto& kv : t) total += kv.second;
+    for (const auto& kv : t)
+      if (!nested(kv.first)) total += kv.second;
     const double particles = static_cast<double>(sim.diagnostics().particles);
     const double mem = comm.max(peak_rss_mb());
     if (comm.is_root()) {
       std::printf("\n%d^2 cells, %.0f particles: %.2f ms/step, %.1f PPE iterations/step, peak %.0f MB/rank\n",
                   n, particles, 1e3 * total / steps, double(its) / steps, mem);
       for (const auto& kv : t)
-        std::printf("  %-32s %9.2f ms/step  %5.1f%%\n", kv.first.c_str(), 1e3 * kv.second / steps,
-                    100 * kv.second / total);
+        std::printf("  %s%-32s %9.2f ms/step  %5.1f%%\n", nested(kv.first) ? "  " : "",
+                    kv.first.c_str(), 1e3 * kv.second / steps, 100 * kv.second / total);
       auto get = [&](const char* k) { return t.count(k) ? t.at(k) : 0.0; };
       const double transfer = get("transfer: particles to grid") + get("transfer: grid to particles");
       if (transfer > 0)

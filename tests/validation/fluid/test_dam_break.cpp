@@ -54,6 +54,7 @@ TEST(DamBreak, SurgeFrontAgainstMartinMoyce) {
     front.push_back(d.front_x / a);
   }
   const auto exp = experiment();
+  ASSERT_EQ(exp.size(), 15u) << "the Martin & Moyce data file was not read";
   // The best constant shift s in [-0.2, 0.2]: simulated front at tau - s against the experiment.
   double best = 1e300, best_shift = 0.0;
   for (int n = -20; n <= 20; ++n) {
