@@ -1,6 +1,6 @@
 // GoogleTest main for tests that use Tpetra: Tpetra::ScopeGuard initialises MPI and Kokkos.
-#include <Tpetra_Core.hpp>
 #include <gtest/gtest.h>
+#include <Tpetra_Core.hpp>
 
 int main(int argc, char** argv) {
   Tpetra::ScopeGuard scope(&argc, &argv);

@@ -36,10 +36,9 @@ int main(int argc, char** argv) {
   for (int n : sizes) {
     // A square tank of side 4a, the column a x 2a, n x n cells.
     const double a = 0.05715, L = 4 * a;
-    std::vector<std::string> o = {"grid/length=" + std::to_string(L),
-                                  "grid/height=" + std::to_string(L),
-                                  "grid/cell_size=" + std::to_string(L / n), "time/end=100",
-                                  "output/progress_seconds=1e9"};
+    std::vector<std::string> o = {
+        "grid/length=" + std::to_string(L), "grid/height=" + std::to_string(L),
+        "grid/cell_size=" + std::to_string(L / n), "time/end=100", "output/progress_seconds=1e9"};
     const auto params = picdem::core::read_case(
         comm, std::string(PICDEM_SOURCE_DIR) + "/cases/dam_break/case.yaml", o, schema);
     picdem::coupling::Simulation sim(comm, params, "");
@@ -64,13 +63,16 @@ int main(int argc, char** argv) {
     const double particles = static_cast<double>(sim.diagnostics().particles);
     const double mem = comm.max(peak_rss_mb());
     if (comm.is_root()) {
-      std::printf("\n%d^2 cells, %.0f particles: %.2f ms/step, %.1f PPE iterations/step, peak %.0f MB/rank\n",
-                  n, particles, 1e3 * total / steps, double(its) / steps, mem);
+      std::printf(
+          "\n%d^2 cells, %.0f particles: %.2f ms/step, %.1f PPE iterations/step, peak %.0f "
+          "MB/rank\n",
+          n, particles, 1e3 * total / steps, double(its) / steps, mem);
       for (const auto& kv : t)
         std::printf("  %s%-32s %9.2f ms/step  %5.1f%%\n", nested(kv.first) ? "  " : "",
                     kv.first.c_str(), 1e3 * kv.second / steps, 100 * kv.second / total);
       auto get = [&](const char* k) { return t.count(k) ? t.at(k) : 0.0; };
-      const double transfer = get("transfer: particles to grid") + get("transfer: grid to particles");
+      const double transfer =
+          get("transfer: particles to grid") + get("transfer: grid to particles");
       if (transfer > 0)
         std::printf("  transfers: %.2e particles/s (P2G + G2P)\n", particles * steps / transfer);
     }

@@ -12,7 +12,9 @@ int Comm::size() const {
   MPI_Comm_size(comm_, &s);
   return s;
 }
-void Comm::barrier() const { MPI_Barrier(comm_); }
+void Comm::barrier() const {
+  MPI_Barrier(comm_);
+}
 
 namespace {
 template <class T>
@@ -23,13 +25,27 @@ T reduce(MPI_Comm c, T v, MPI_Datatype t, MPI_Op op) {
 }
 }  // namespace
 
-double Comm::sum(double v) const { return reduce(comm_, v, MPI_DOUBLE, MPI_SUM); }
-long long Comm::sum(long long v) const { return reduce(comm_, v, MPI_LONG_LONG, MPI_SUM); }
-double Comm::max(double v) const { return reduce(comm_, v, MPI_DOUBLE, MPI_MAX); }
-double Comm::min(double v) const { return reduce(comm_, v, MPI_DOUBLE, MPI_MIN); }
-long long Comm::max(long long v) const { return reduce(comm_, v, MPI_LONG_LONG, MPI_MAX); }
-long long Comm::min(long long v) const { return reduce(comm_, v, MPI_LONG_LONG, MPI_MIN); }
-bool Comm::any(bool v) const { return reduce(comm_, v ? 1 : 0, MPI_INT, MPI_MAX) != 0; }
+double Comm::sum(double v) const {
+  return reduce(comm_, v, MPI_DOUBLE, MPI_SUM);
+}
+long long Comm::sum(long long v) const {
+  return reduce(comm_, v, MPI_LONG_LONG, MPI_SUM);
+}
+double Comm::max(double v) const {
+  return reduce(comm_, v, MPI_DOUBLE, MPI_MAX);
+}
+double Comm::min(double v) const {
+  return reduce(comm_, v, MPI_DOUBLE, MPI_MIN);
+}
+long long Comm::max(long long v) const {
+  return reduce(comm_, v, MPI_LONG_LONG, MPI_MAX);
+}
+long long Comm::min(long long v) const {
+  return reduce(comm_, v, MPI_LONG_LONG, MPI_MIN);
+}
+bool Comm::any(bool v) const {
+  return reduce(comm_, v ? 1 : 0, MPI_INT, MPI_MAX) != 0;
+}
 
 long long Comm::exclusive_scan(long long v) const {
   long long out = 0;

@@ -32,7 +32,10 @@ std::string format_duration(double s) {
 }
 
 Progress::Progress(Comm comm, double t_start, double t_end, double interval_seconds)
-    : comm_(comm), t_start_(t_start), t_end_(t_end), interval_(interval_seconds),
+    : comm_(comm),
+      t_start_(t_start),
+      t_end_(t_end),
+      interval_(interval_seconds),
       wall_start_(wall_seconds()) {}
 
 void Progress::report(double t, long long step, double dt, int solver_iterations, bool force) {
@@ -46,11 +49,11 @@ void Progress::report(double t, long long step, double dt, int solver_iterations
   const int width = 20;
   const int filled = static_cast<int>(width * std::min(1.0, std::max(0.0, done)));
   char line[256];
-  std::snprintf(line, sizeof line,
-                "[%-*s] %5.1f%%  t = %.4f s  step %lld  dt = %.2e s  PPE its %d  elapsed %s  ETA %s",
-                width, std::string(static_cast<std::size_t>(filled), '#').c_str(), 100.0 * done, t,
-                step, dt, solver_iterations, format_duration(elapsed).c_str(),
-                format_duration(eta).c_str());
+  std::snprintf(
+      line, sizeof line,
+      "[%-*s] %5.1f%%  t = %.4f s  step %lld  dt = %.2e s  PPE its %d  elapsed %s  ETA %s", width,
+      std::string(static_cast<std::size_t>(filled), '#').c_str(), 100.0 * done, t, step, dt,
+      solver_iterations, format_duration(elapsed).c_str(), format_duration(eta).c_str());
   std::cout << line << std::endl;
 }
 

@@ -123,12 +123,18 @@ std::string yaml_error_message(const std::string& what, const std::string& sourc
 
 std::string ParamDecl::kind_name() const {
   switch (kind) {
-    case ParamKind::Integer: return "integer";
-    case ParamKind::Real: return "real";
-    case ParamKind::Boolean: return "boolean";
-    case ParamKind::String: return "string";
-    case ParamKind::RealArray: return "list of reals";
-    case ParamKind::Passthrough: return "section";
+    case ParamKind::Integer:
+      return "integer";
+    case ParamKind::Real:
+      return "real";
+    case ParamKind::Boolean:
+      return "boolean";
+    case ParamKind::String:
+      return "string";
+    case ParamKind::RealArray:
+      return "list of reals";
+    case ParamKind::Passthrough:
+      return "section";
   }
   return "?";
 }
@@ -150,9 +156,12 @@ std::string ParamDecl::allowed() const {
   }
   if (kind == ParamKind::RealArray) {
     std::string n;
-    if (min_size == max_size) n = std::to_string(min_size) + " values";
-    else if (max_size >= (1 << 30)) n = "at least " + std::to_string(min_size) + " values";
-    else n = std::to_string(min_size) + " to " + std::to_string(max_size) + " values";
+    if (min_size == max_size)
+      n = std::to_string(min_size) + " values";
+    else if (max_size >= (1 << 30))
+      n = "at least " + std::to_string(min_size) + " values";
+    else
+      n = std::to_string(min_size) + " to " + std::to_string(max_size) + " values";
     out = n + ", each " + out;
   }
   return out;
@@ -161,16 +170,21 @@ std::string ParamDecl::allowed() const {
 std::string ParamDecl::default_text() const {
   if (required) return "required";
   switch (kind) {
-    case ParamKind::Integer: return std::to_string(int_default);
-    case ParamKind::Real: return fmt(real_default);
-    case ParamKind::Boolean: return bool_default ? "true" : "false";
-    case ParamKind::String: return string_default.empty() ? "\"\"" : string_default;
+    case ParamKind::Integer:
+      return std::to_string(int_default);
+    case ParamKind::Real:
+      return fmt(real_default);
+    case ParamKind::Boolean:
+      return bool_default ? "true" : "false";
+    case ParamKind::String:
+      return string_default.empty() ? "\"\"" : string_default;
     case ParamKind::RealArray: {
       std::vector<std::string> v;
       for (double d : array_default) v.push_back(fmt(d));
       return "[" + join(v, ", ") + "]";
     }
-    case ParamKind::Passthrough: return "see text";
+    case ParamKind::Passthrough:
+      return "see text";
   }
   return "";
 }
@@ -235,7 +249,9 @@ FamilyDecl& ParamSchema::family(const std::string& path, const std::string& doc)
 void ParamSchema::section(const std::string& path, const std::string& doc) {
   sections_.emplace_back(path, doc);
 }
-void ParamSchema::check(ParamCheck c) { checks_.push_back(std::move(c)); }
+void ParamSchema::check(ParamCheck c) {
+  checks_.push_back(std::move(c));
+}
 
 // ---------------------------------------------------------------------------------------------
 // Validation
@@ -289,9 +305,10 @@ struct SchemaResolver {
     }
     std::string msg = "unknown key '" + prefix + rel + name + "'";
     if (!best.empty()) msg += " (did you mean '" + prefix + rel + best + "'?)";
-    const std::string where = rel.empty() ? (prefix.empty() ? "at the top level" : "in '" +
-                                             prefix.substr(0, prefix.size() - 1) + "'")
-                                          : "in '" + prefix + rel.substr(0, rel.size() - 1) + "'";
+    const std::string where =
+        rel.empty() ? (prefix.empty() ? "at the top level"
+                                      : "in '" + prefix.substr(0, prefix.size() - 1) + "'")
+                    : "in '" + prefix + rel.substr(0, rel.size() - 1) + "'";
     msg += "; allowed " + where + ": " + join(allowed, ", ");
     errors.push_back(msg);
   }
@@ -308,11 +325,12 @@ struct SchemaResolver {
     const std::string key = "'" + prefix + d.path + "'";
     auto bad_type = [&] {
       errors.push_back("key " + key + " expects " +
-                       (d.kind == ParamKind::Integer ? std::string("an integer")
-                        : d.kind == ParamKind::Real  ? std::string("a real number")
+                       (d.kind == ParamKind::Integer   ? std::string("an integer")
+                        : d.kind == ParamKind::Real    ? std::string("a real number")
                         : d.kind == ParamKind::Boolean ? std::string("true or false")
-                        : d.kind == ParamKind::String  ? std::string("a text")
-                                                       : std::string("a list of reals like [1.0, 2.0]")) +
+                        : d.kind == ParamKind::String
+                            ? std::string("a text")
+                            : std::string("a list of reals like [1.0, 2.0]")) +
                        ", got " + describe(e));
     };
     auto out_of_range = [&](const std::string& got) {
@@ -325,9 +343,12 @@ struct SchemaResolver {
     switch (d.kind) {
       case ParamKind::Integer: {
         long long v;
-        if (e.isType<int>()) v = Teuchos::getValue<int>(e);
-        else if (e.isType<long long>()) v = Teuchos::getValue<long long>(e);
-        else return bad_type();
+        if (e.isType<int>())
+          v = Teuchos::getValue<int>(e);
+        else if (e.isType<long long>())
+          v = Teuchos::getValue<long long>(e);
+        else
+          return bad_type();
         if (!in_range(d, static_cast<double>(v)) || v > std::numeric_limits<int>::max() ||
             v < std::numeric_limits<int>::min())
           return out_of_range(std::to_string(v));
@@ -336,10 +357,14 @@ struct SchemaResolver {
       }
       case ParamKind::Real: {
         double v;
-        if (e.isType<double>()) v = Teuchos::getValue<double>(e);
-        else if (e.isType<int>()) v = Teuchos::getValue<int>(e);
-        else if (e.isType<long long>()) v = static_cast<double>(Teuchos::getValue<long long>(e));
-        else return bad_type();
+        if (e.isType<double>())
+          v = Teuchos::getValue<double>(e);
+        else if (e.isType<int>())
+          v = Teuchos::getValue<int>(e);
+        else if (e.isType<long long>())
+          v = static_cast<double>(Teuchos::getValue<long long>(e));
+        else
+          return bad_type();
         if (!in_range(d, v)) return out_of_range(fmt(v));
         out.set(name, v);
         return;
@@ -351,17 +376,20 @@ struct SchemaResolver {
       case ParamKind::String: {
         if (!e.isType<std::string>()) return bad_type();
         const auto v = Teuchos::getValue<std::string>(e);
-        if (!d.choices.empty() && std::find(d.choices.begin(), d.choices.end(), v) == d.choices.end())
+        if (!d.choices.empty() &&
+            std::find(d.choices.begin(), d.choices.end(), v) == d.choices.end())
           return out_of_range("'" + v + "'");
         out.set(name, v);
         return;
       }
       case ParamKind::RealArray: {
         Teuchos::Array<double> v;
-        if (e.isType<Teuchos::Array<double>>()) v = Teuchos::getValue<Teuchos::Array<double>>(e);
+        if (e.isType<Teuchos::Array<double>>())
+          v = Teuchos::getValue<Teuchos::Array<double>>(e);
         else if (e.isType<Teuchos::Array<int>>())
           for (int x : Teuchos::getValue<Teuchos::Array<int>>(e)) v.push_back(x);
-        else return bad_type();
+        else
+          return bad_type();
         if (static_cast<int>(v.size()) < d.min_size || static_cast<int>(v.size()) > d.max_size) {
           errors.push_back("key " + key + " has " + std::to_string(v.size()) +
                            " values; allowed: " + d.allowed());
@@ -372,7 +400,8 @@ struct SchemaResolver {
         out.set(name, v);
         return;
       }
-      case ParamKind::Passthrough: return;
+      case ParamKind::Passthrough:
+        return;
     }
   }
 
@@ -384,8 +413,8 @@ struct SchemaResolver {
       if (const ParamDecl* d = decl(path)) {
         if (d->kind == ParamKind::Passthrough) {
           if (!e.isList()) {
-            errors.push_back("key '" + prefix + path + "' must be a section of solver settings, got " +
-                             describe(e));
+            errors.push_back("key '" + prefix + path +
+                             "' must be a section of solver settings, got " + describe(e));
             continue;
           }
           // Declared defaults first, then the user's keys on top, otherwise unchanged.
@@ -453,16 +482,24 @@ struct SchemaResolver {
     for (const auto& d : schema.decls_) {
       if (has_path(out, d.path) || has_path(in, d.path)) continue;
       if (d.required) {
-        errors.push_back("missing required key '" + prefix + d.path + "' (" + d.kind_name() +
-                         ", " + d.allowed() + "): " + d.doc);
+        errors.push_back("missing required key '" + prefix + d.path + "' (" + d.kind_name() + ", " +
+                         d.allowed() + "): " + d.doc);
         continue;
       }
       Teuchos::ParameterEntry e;
       switch (d.kind) {
-        case ParamKind::Integer: e.setValue(static_cast<int>(d.int_default)); break;
-        case ParamKind::Real: e.setValue(d.real_default); break;
-        case ParamKind::Boolean: e.setValue(d.bool_default); break;
-        case ParamKind::String: e.setValue(d.string_default); break;
+        case ParamKind::Integer:
+          e.setValue(static_cast<int>(d.int_default));
+          break;
+        case ParamKind::Real:
+          e.setValue(d.real_default);
+          break;
+        case ParamKind::Boolean:
+          e.setValue(d.bool_default);
+          break;
+        case ParamKind::String:
+          e.setValue(d.string_default);
+          break;
         case ParamKind::RealArray:
           e.setValue(Teuchos::Array<double>(d.array_default.begin(), d.array_default.end()));
           break;
@@ -540,7 +577,8 @@ std::string ParamSchema::reference_markdown() const {
     for (const auto& sec : sections_)
       if (sec.first == s) out << sec.second << "\n\n";
     bool any = false;
-    for (const auto& d : decls_) any |= split_path(d.path).front() == s && split_path(d.path).size() > 1;
+    for (const auto& d : decls_)
+      any |= split_path(d.path).front() == s && split_path(d.path).size() > 1;
     if (any) table(decls_, s, "");
     for (const auto& d : decls_)
       if (d.kind == ParamKind::Passthrough && split_path(d.path).front() == s)
@@ -638,7 +676,9 @@ std::vector<std::string> Params::sublist_names(const std::string& path) const {
 const ParameterList& Params::teuchos(const std::string& path) const {
   return path.empty() ? *list_ : node(path, nullptr);
 }
-std::string Params::full_path(const std::string& path) const { return prefix_ + path; }
+std::string Params::full_path(const std::string& path) const {
+  return prefix_ + path;
+}
 std::string Params::to_yaml() const {
   std::ostringstream s;
   s.setf(std::ios::showpoint);  // Teuchos asks for it so that 1.0 stays a real

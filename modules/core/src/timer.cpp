@@ -34,7 +34,9 @@ std::map<std::string, double> timer_totals() {
   return out;
 }
 
-void reset_timers() { Teuchos::TimeMonitor::zeroOutTimers(); }
+void reset_timers() {
+  Teuchos::TimeMonitor::zeroOutTimers();
+}
 
 void summarize_timers(const Comm& comm, std::ostream& out) {
   auto tcomm = Teuchos::rcp(new Teuchos::MpiComm<int>(comm.raw()));

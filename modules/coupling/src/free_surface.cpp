@@ -44,7 +44,8 @@ void particle_occupancy(const particles::ParticleSet& ps, const grid::Decomposit
   halo.forward(S);
 }
 
-double occupied_area(const grid::CellField& S, const grid::Decomposition& d, const core::Comm& comm) {
+double occupied_area(const grid::CellField& S, const grid::Decomposition& d,
+                     const core::Comm& comm) {
   const auto& spec = d.spec();
   const auto own = d.owned_cells();
   // S at a centre, mirrored across the tank walls.
@@ -59,7 +60,8 @@ double occupied_area(const grid::CellField& S, const grid::Decomposition& d, con
     for (int i = own.i0; i < own.i1; ++i) {
       double lo = 1e300, hi = -1e300;
       for (int b = -1; b <= 1; ++b)
-        for (int a = -1; a <= 1; ++a) lo = std::min(lo, at(i + a, k + b)), hi = std::max(hi, at(i + a, k + b));
+        for (int a = -1; a <= 1; ++a)
+          lo = std::min(lo, at(i + a, k + b)), hi = std::max(hi, at(i + a, k + b));
       if (lo > 0.5) {
         area_cells += 1.0;
         continue;
@@ -72,8 +74,9 @@ double occupied_area(const grid::CellField& S, const grid::Decomposition& d, con
           const double px = (r + 0.5) / sub - 0.5, pz = (q + 0.5) / sub - 0.5;
           const int a = px < 0 ? -1 : 0, b = pz < 0 ? -1 : 0;
           const double fx = px - a, fz = pz - b;
-          const double s = (1 - fx) * (1 - fz) * at(i + a, k + b) + fx * (1 - fz) * at(i + a + 1, k + b) +
-                           (1 - fx) * fz * at(i + a, k + b + 1) + fx * fz * at(i + a + 1, k + b + 1);
+          const double s =
+              (1 - fx) * (1 - fz) * at(i + a, k + b) + fx * (1 - fz) * at(i + a + 1, k + b) +
+              (1 - fx) * fz * at(i + a, k + b + 1) + fx * fz * at(i + a + 1, k + b + 1);
           inside += s > 0.5 ? 1 : 0;
         }
       area_cells += static_cast<double>(inside) / (sub * sub);

@@ -20,11 +20,15 @@ namespace fs = std::filesystem;
 
 Output::Output(core::Comm comm, const core::Params& params, const grid::Decomposition& d,
                std::string directory, const Mark* resume, double resume_t)
-    : comm_(comm), params_(params), decomp_(d), dir_(std::move(directory)),
+    : comm_(comm),
+      params_(params),
+      decomp_(d),
+      dir_(std::move(directory)),
       interval_(params.real("output/interval")) {
   const bool append = resume != nullptr;
-  if (resume) next_frame_ = resume->next_frame, frames_ = resume->frames,
-              last_frame_step_ = resume->last_frame_step;
+  if (resume)
+    next_frame_ = resume->next_frame, frames_ = resume->frames,
+    last_frame_step_ = resume->last_frame_step;
   if (comm_.is_root()) {
     fs::create_directories(dir_);
     fs::create_directories(dir_ + "/pictures");
@@ -33,28 +37,42 @@ Output::Output(core::Comm comm, const core::Params& params, const grid::Decompos
   comm_.barrier();
   if (params_.boolean("output/paraview"))
     frames_writer_ = std::make_unique<io::FrameWriter>(
-        dir_, d, append,
-        resume ? resume->last_frame_step : std::numeric_limits<long long>::max());
-  std::vector<std::string> columns{"t", "dt", "step", "fluid_volume", "kinetic_energy",
-                                   "ppe_iterations", "ppe_residual", "front_x", "particles",
-                                   "max_speed", "solid_kinetic_energy"};
+        dir_, d, append, resume ? resume->last_frame_step : std::numeric_limits<long long>::max());
+  std::vector<std::string> columns{"t",
+                                   "dt",
+                                   "step",
+                                   "fluid_volume",
+                                   "kinetic_energy",
+                                   "ppe_iterations",
+                                   "ppe_residual",
+                                   "front_x",
+                                   "particles",
+                                   "max_speed",
+                                   "solid_kinetic_energy"};
   const auto probes = params.reals("output/level_probes");
-  for (std::size_t n = 0; n < probes.size(); ++n) columns.push_back("level_" + std::to_string(n + 1));
+  for (std::size_t n = 0; n < probes.size(); ++n)
+    columns.push_back("level_" + std::to_string(n + 1));
   if (!params.reals("output/solid_count_box").empty()) columns.push_back("solids_in_box");
-  timeseries_ = std::make_unique<io::CsvWriter>(comm_, dir_ + "/timeseries.csv", columns, append,
-                                                resume_t);
+  timeseries_ =
+      std::make_unique<io::CsvWriter>(comm_, dir_ + "/timeseries.csv", columns, append, resume_t);
   solids_ = std::make_unique<io::CsvWriter>(
       comm_, dir_ + "/solids.csv",
-      std::vector<std::string>{"t", "id", "x", "z", "theta", "u", "w", "omega"}, append,
-      resume_t);
+      std::vector<std::string>{"t", "id", "x", "z", "theta", "u", "w", "omega"}, append, resume_t);
 }
 
 Output::~Output() = default;
 
 void Output::record(const Diagnostics& g) {
-  std::vector<double> row{g.t, g.dt, static_cast<double>(g.step), g.fluid_volume,
-                          g.kinetic_energy, static_cast<double>(g.ppe_iterations), g.ppe_residual,
-                          g.front_x, static_cast<double>(g.particles), g.max_speed,
+  std::vector<double> row{g.t,
+                          g.dt,
+                          static_cast<double>(g.step),
+                          g.fluid_volume,
+                          g.kinetic_energy,
+                          static_cast<double>(g.ppe_iterations),
+                          g.ppe_residual,
+                          g.front_x,
+                          static_cast<double>(g.particles),
+                          g.max_speed,
                           g.solid_kinetic_energy};
   row.insert(row.end(), g.levels.begin(), g.levels.end());
   if (!params_.reals("output/solid_count_box").empty())
@@ -102,8 +120,8 @@ void Output::write_frame(double t, long long step, const particles::ParticleSet&
     }
     for (const auto& st : dem->gather_all())
       if (data)
-        solids_->row({t, static_cast<double>(st.id), st.x.x, st.x.z, st.theta, st.v.x, st.v.z,
-                    st.omega});
+        solids_->row(
+            {t, static_cast<double>(st.id), st.x.x, st.x.z, st.theta, st.v.x, st.v.z, st.omega});
   }
   // Fixed obstacles are known everywhere: rank 0 passes them.
   for (std::size_t o = 0; comm_.is_root() && o < obstacles.size(); ++o)
@@ -138,7 +156,10 @@ void Output::finish(double t, long long step, const Diagnostics&, const particle
   std::ostringstream table;
   core::summarize_timers(comm_, table);
   if (comm_.is_root()) std::ofstream(dir_ + "/timers.txt") << table.str();
-  core::log(comm_, "output in " + fs::absolute(dir_).string() + ":\n  pictures/final.png (last state), pictures/frame_*.png\n  picdem.xdmf + frames/*.h5 (open picdem.xdmf in ParaView)\n  timeseries.csv, solids.csv, case_resolved.yaml, timers.txt");
+  core::log(comm_, "output in " + fs::absolute(dir_).string() +
+                       ":\n  pictures/final.png (last state), pictures/frame_*.png\n  picdem.xdmf "
+                       "+ frames/*.h5 (open picdem.xdmf in ParaView)\n  timeseries.csv, "
+                       "solids.csv, case_resolved.yaml, timers.txt");
 }
 
 }  // namespace picdem::coupling

@@ -19,8 +19,8 @@ void declare_parameters(core::ParamSchema& s) {
   s.real("time/end", 1.0, "simulated time to reach [s]").positive().is_required();
   s.real("time/cfl", 0.5, "CFL number: dt <= cfl h / max|u| on the grid").positive().at_most(5.0);
   s.real("time/dt_max", 1e-3, "largest time step [s]").positive();
-  s.real("time/dt_min", 1e-8,
-         "smallest time step [s]; a step below it stops the run as blown up").positive();
+  s.real("time/dt_min", 1e-8, "smallest time step [s]; a step below it stops the run as blown up")
+      .positive();
 
   s.section("output", "What the run writes, and how often.");
   s.string("output/directory", "", {},
@@ -29,7 +29,9 @@ void declare_parameters(core::ParamSchema& s) {
       .positive();
   s.boolean("output/paraview", true, "write XDMF + HDF5 frames");
   s.boolean("output/png", true, "write a PNG picture with every frame");
-  s.integer("output/png_width", 1000, "width of the PNG pictures [pixels]").at_least(64).at_most(8000);
+  s.integer("output/png_width", 1000, "width of the PNG pictures [pixels]")
+      .at_least(64)
+      .at_most(8000);
   s.reals("output/level_probes", {},
           "x positions [m] whose free-surface height is recorded in timeseries.csv (level_1, ...)")
       .size(0, 32);
@@ -70,15 +72,17 @@ void declare_parameters(core::ParamSchema& s) {
 
   s.check([](const core::Params& p, std::vector<std::string>& errors) {
     const auto count_box = p.reals("output/solid_count_box");
-    if (!count_box.empty() && (count_box.size() != 4 || !(count_box[0] < count_box[1]) ||
-                               !(count_box[2] < count_box[3])))
-      errors.push_back("key 'output/solid_count_box' must be empty or [x_min, x_max, z_min, z_max] "
-                       "with min < max");
+    if (!count_box.empty() &&
+        (count_box.size() != 4 || !(count_box[0] < count_box[1]) || !(count_box[2] < count_box[3])))
+      errors.push_back(
+          "key 'output/solid_count_box' must be empty or [x_min, x_max, z_min, z_max] "
+          "with min < max");
     // Solids and water must feel the same gravity.
     if (!p.sublist_names("water").empty() && !p.sublist_names("solids").empty() &&
         p.reals("dem/gravity") != p.reals("fluid/gravity"))
-      errors.push_back("keys 'dem/gravity' and 'fluid/gravity' differ; with water and solids in "
-                       "one case they must be the same");
+      errors.push_back(
+          "keys 'dem/gravity' and 'fluid/gravity' differ; with water and solids in "
+          "one case they must be the same");
     const auto o = p.reals("grid/origin");
     const double x0 = o[0], z0 = o[1];
     const double x1 = x0 + p.real("grid/length"), z1 = z0 + p.real("grid/height");
@@ -89,8 +93,8 @@ void declare_parameters(core::ParamSchema& s) {
       if (w.string("type") == "box") {
         const auto x = w.reals("x"), z = w.reals("z");
         if (!(x[0] < x[1]) || !(z[0] < z[1])) {
-          msg << "water/" << name << ": x = [" << x[0] << ", " << x[1] << "], z = [" << z[0]
-              << ", " << z[1] << "] is empty; give [min, max] with min < max";
+          msg << "water/" << name << ": x = [" << x[0] << ", " << x[1] << "], z = [" << z[0] << ", "
+              << z[1] << "] is empty; give [min, max] with min < max";
           errors.push_back(msg.str());
         } else if (x[0] < x0 || x[1] > x1 || z[0] < z0 || z[1] > z1) {
           msg << "water/" << name << ": the block x = [" << x[0] << ", " << x[1] << "], z = ["
@@ -101,8 +105,9 @@ void declare_parameters(core::ParamSchema& s) {
       } else {
         const double z = w.real("z");
         if (z <= z0 || z > z1) {
-          msg << "key 'water/" << name << "/z' = " << z << " is not allowed: the level must lie in ("
-              << z0 << ", " << z1 << "], inside the tank";
+          msg << "key 'water/" << name << "/z' = " << z
+              << " is not allowed: the level must lie in (" << z0 << ", " << z1
+              << "], inside the tank";
           errors.push_back(msg.str());
         }
       }

@@ -28,7 +28,6 @@ using grid::CellState;
 using grid::FaceField;
 using grid::Stagger;
 
-
 namespace {
 
 bool inside_water(const core::Params& params, const Vec2& c) {
@@ -68,9 +67,9 @@ Simulation::Simulation(core::Comm comm, core::Params params, std::string output_
   s.beta = params.real("coupling/beta");
   s.particle_cfg = particles::config_from(params);
   const int halo = std::max(3, particles::required_halo(s.particle_cfg));
-  s.decomp = std::make_unique<grid::Decomposition>(s.spec, comm, halo,
-                                                   static_cast<int>(params.integer("grid/ranks_x")),
-                                                   static_cast<int>(params.integer("grid/ranks_z")));
+  s.decomp = std::make_unique<grid::Decomposition>(
+      s.spec, comm, halo, static_cast<int>(params.integer("grid/ranks_x")),
+      static_cast<int>(params.integer("grid/ranks_z")));
   s.halo = std::make_unique<grid::Halo>(*s.decomp);
   const auto& d = *s.decomp;
 
@@ -88,7 +87,8 @@ Simulation::Simulation(core::Comm comm, core::Params params, std::string output_
 
   if (s.has_fluid) {
     s.fluid_cfg = fluid::config_from(params);
-    s.quadrature = {params.boolean("coupling/hydrostatic_quadrature"), s.fluid_cfg.rho, s.fluid_cfg.g};
+    s.quadrature = {params.boolean("coupling/hydrostatic_quadrature"), s.fluid_cfg.rho,
+                    s.fluid_cfg.g};
     s.pressure = std::make_unique<fluid::PressureSolver>(d, params);
     s.u = FaceField(d, Stagger::FaceX);
     s.w = FaceField(d, Stagger::FaceZ);
@@ -128,10 +128,18 @@ Simulation::Simulation(core::Comm comm, core::Params params, std::string output_
 
 Simulation::~Simulation() = default;
 
-const Diagnostics& Simulation::diagnostics() const { return s_->diag; }
-double Simulation::time() const { return s_->t; }
-long long Simulation::step_count() const { return s_->step; }
-const core::Params& Simulation::params() const { return s_->params; }
+const Diagnostics& Simulation::diagnostics() const {
+  return s_->diag;
+}
+double Simulation::time() const {
+  return s_->t;
+}
+long long Simulation::step_count() const {
+  return s_->step;
+}
+const core::Params& Simulation::params() const {
+  return s_->params;
+}
 
 // ---------------------------------------------------------------------------------------------
 // The phases of a step (paper Fig. 4). Each reads what the one before it left.
@@ -144,8 +152,8 @@ double choose_time_step(SimulationState& s) {
   if (!s.has_fluid) return dt_max;
   // The particles may outrun the grid (FLIP): the fastest of either sets the CFL limit.
   const double cfl = s.params.real("time/cfl");
-  double dt = std::min(dt_max, fluid::cfl_time_step(s.u, s.w, s.spec.h, cfl,
-                                                    s.params.real("time/dt_max"), s.comm));
+  double dt = std::min(
+      dt_max, fluid::cfl_time_step(s.u, s.w, s.spec.h, cfl, s.params.real("time/dt_max"), s.comm));
   if (s.diag.max_speed > 0.0) dt = std::min(dt, cfl * s.spec.h / s.diag.max_speed);
   if (!(dt >= s.params.real("time/dt_min")) && s.t_end - s.t > s.params.real("time/dt_min")) {
     std::ostringstream m;
@@ -233,7 +241,8 @@ void add_forces(SimulationState& s, double dt) {
 // contact: collision loads predicted at level n with dt in eq. 8 (for eq. 6 inside the PPE).
 void predict_contacts(SimulationState& s, double dt) {
   core::ScopedTimer timer("contact prediction");
-  s.collision_loads = s.dem ? s.dem->predicted_collision_loads(dt) : std::vector<core::SolidLoads>{};
+  s.collision_loads =
+      s.dem ? s.dem->predicted_collision_loads(dt) : std::vector<core::SolidLoads>{};
 }
 
 // pressure: the E-weighted PPE with the solids' velocities substituted (eqs. 5-6), solved
@@ -242,8 +251,8 @@ void solve_pressure(SimulationState& s, double dt) {
   std::vector<fluid::SolidCoupling> couplings;
   if (s.dem) {
     core::ScopedTimer timer("geometry");
-    couplings = solid_couplings(s.scene, s.cut, s.cells, *s.decomp, s.collision_loads,
-                                s.quadrature, dt, s.comm);
+    couplings = solid_couplings(s.scene, s.cut, s.cells, *s.decomp, s.collision_loads, s.quadrature,
+                                dt, s.comm);
   }
   core::ScopedTimer timer("pressure");
   s.last_solve = s.pressure->solve(s.cells, s.apertures, s.u, s.w, couplings, dt, s.fluid_cfg, s.p,
@@ -333,7 +342,8 @@ void advect_particles(SimulationState& s, double dt) {
     const auto b = uncut.storage();
     for (int k = b.k0; k < b.k1; ++k)
       for (int i = b.i0; i < b.i1; ++i)
-        if (s.cut.fluid_fraction(i, k) < 1.0) uncut(i, k) = static_cast<signed char>(CellState::Solid);
+        if (s.cut.fluid_fraction(i, k) < 1.0)
+          uncut(i, k) = static_cast<signed char>(CellState::Solid);
     reseed_cells = &uncut;
   }
   particles::reseed(s.particles, s.particle_cfg, *s.decomp, s.count, *reseed_cells, s.u, s.w,
@@ -413,18 +423,18 @@ void Simulation::step() {
   SimulationState& s = *s_;
   const double dt = choose_time_step(s);
   if (s.has_fluid) {
-    place_solids(s);            // geometry
-    mark_cells(s);              // transfer (cells)
-    particles_to_grid(s);       // transfer
-    add_forces(s, dt);          // forces
-    predict_contacts(s, dt);    // contact
-    solve_pressure(s, dt);      // pressure
-    project(s, dt);             // project
-    advance_solids(s, dt);      // solids
-    grid_to_particles(s);       // transfer
-    advect_particles(s, dt);    // advect
+    place_solids(s);          // geometry
+    mark_cells(s);            // transfer (cells)
+    particles_to_grid(s);     // transfer
+    add_forces(s, dt);        // forces
+    predict_contacts(s, dt);  // contact
+    solve_pressure(s, dt);    // pressure
+    project(s, dt);           // project
+    advance_solids(s, dt);    // solids
+    grid_to_particles(s);     // transfer
+    advect_particles(s, dt);  // advect
   } else {
-    advance_solids(s, dt);      // dry: solids only
+    advance_solids(s, dt);  // dry: solids only
   }
   s.t += dt;
   ++s.step;
@@ -459,7 +469,9 @@ std::vector<core::SolidState> Simulation::solids() const {
   return s_->dem ? s_->dem->gather_all() : std::vector<core::SolidState>{};
 }
 
-double Simulation::surface_height(double x) const { return coupling::surface_height(*s_, x); }
+double Simulation::surface_height(double x) const {
+  return coupling::surface_height(*s_, x);
+}
 
 double Simulation::max_contact_overlap() const {
   const SimulationState& s = *s_;
@@ -502,27 +514,31 @@ void Simulation::run(long long max_steps) {
     check_step(s);
     if (s.output) {
       s.output->record(s.diag);
-      s.output->frame(s.t, s.step, s.diag, s.particles, s.p, s.cells, s.dem.get(), s.obstacles, false);
+      s.output->frame(s.t, s.step, s.diag, s.particles, s.p, s.cells, s.dem.get(), s.obstacles,
+                      false);
     }
     progress.report(s.t, s.step, s.diag.dt, s.diag.ppe_iterations);
     const bool stop = s.comm.any(stop_signal_received());
     if (!ck.directory.empty()) {
       const bool by_steps = ck.every_steps > 0 && s.step % ck.every_steps == 0;
-      const bool by_time = ck.every_seconds > 0.0 &&
+      const bool by_time =
+          ck.every_seconds > 0.0 &&
           s.comm.max(core::wall_seconds() - wall_last_checkpoint) >= ck.every_seconds;
       if (stop || by_steps || by_time) checkpoint();
     }
     if (stop) {
-      core::log(s.comm, "picdem: stop signal at step " + std::to_string(s.step) +
-                            (ck.directory.empty() ? ", no checkpoint directory" : ": checkpoint written") +
-                            ", stopping");
+      core::log(s.comm,
+                "picdem: stop signal at step " + std::to_string(s.step) +
+                    (ck.directory.empty() ? ", no checkpoint directory" : ": checkpoint written") +
+                    ", stopping");
       s.stopped_by_signal = true;
       return;
     }
   }
   progress.report(s.t, s.step, s.diag.dt, s.diag.ppe_iterations, true);
   if (!ck.directory.empty() && ck.at_end && last_checkpoint_step != s.step) checkpoint();
-  if (s.output) s.output->finish(s.t, s.step, s.diag, s.particles, s.p, s.cells, s.dem.get(), s.obstacles);
+  if (s.output)
+    s.output->finish(s.t, s.step, s.diag, s.particles, s.p, s.cells, s.dem.get(), s.obstacles);
 }
 
 void Simulation::enable_checkpoints(const std::string& directory) {
@@ -548,6 +564,8 @@ void Simulation::write_checkpoint(const std::string& path) const {
   coupling::write_checkpoint(s, path, s.output ? s.output->mark() : Output::Mark{});
 }
 
-bool Simulation::stopped_by_signal() const { return s_->stopped_by_signal; }
+bool Simulation::stopped_by_signal() const {
+  return s_->stopped_by_signal;
+}
 
 }  // namespace picdem::coupling

@@ -50,7 +50,7 @@ struct SimulationState {
   // solids
   std::vector<geometry::Obstacle> obstacles;
   std::unique_ptr<dem::DemSolver> dem;
-  SolidScene scene;             // poses at the start of the step (cut cells)
+  SolidScene scene;  // poses at the start of the step (cut cells)
   geometry::CutCells cut;
   std::vector<core::SolidLoads> collision_loads, fluid_loads;
   double beta = 1.0;

@@ -79,13 +79,10 @@ void add_quadrature_load(const geometry::WettedPiece& piece, const grid::GridSpe
 
 }  // namespace
 
-std::vector<fluid::SolidCoupling> solid_couplings(const SolidScene& scene,
-                                                  const geometry::CutCells& cut,
-                                                  const fluid::CellStates& cells,
-                                                  const grid::Decomposition& d,
-                                                  const std::vector<core::SolidLoads>& collision,
-                                                  const QuadratureOptions& quadrature, double dt,
-                                                  const core::Comm& comm) {
+std::vector<fluid::SolidCoupling> solid_couplings(
+    const SolidScene& scene, const geometry::CutCells& cut, const fluid::CellStates& cells,
+    const grid::Decomposition& d, const std::vector<core::SolidLoads>& collision,
+    const QuadratureOptions& quadrature, double dt, const core::Comm& comm) {
   const Vec2 gravity = quadrature.g;
   const auto n = solid_count(scene, comm);
   if (n == 0) return {};
@@ -126,17 +123,16 @@ std::vector<fluid::SolidCoupling> solid_couplings(const SolidScene& scene,
     c.inertia = st.inertia;
     const double* f = coll.row(st.id);
     // V* = V^n + dt M^-1 (F_g + F_coll)   (eq. 6 without the pressure term)
-    c.v_star = {st.v.x + dt * (gravity.x + f[0] / st.mass), st.v.z + dt * (gravity.z + f[1] / st.mass),
-                st.omega + dt * f[2] / st.inertia};
+    c.v_star = {st.v.x + dt * (gravity.x + f[0] / st.mass),
+                st.v.z + dt * (gravity.z + f[1] / st.mass), st.omega + dt * f[2] / st.inertia};
     out.push_back(std::move(c));
   }
   return out;
 }
 
 std::vector<core::SolidLoads> fluid_loads(const SolidScene& scene, const geometry::CutCells& cut,
-                                          const fluid::CellStates& cells,
-                                          const grid::CellField& p, const grid::Decomposition& d,
-                                          const dem::DemSolver& dem,
+                                          const fluid::CellStates& cells, const grid::CellField& p,
+                                          const grid::Decomposition& d, const dem::DemSolver& dem,
                                           const QuadratureOptions& quadrature,
                                           const core::Comm& comm) {
   const auto n = solid_count(scene, comm);
@@ -250,8 +246,7 @@ bool in_polygon(Vec2 p, const std::vector<Vec2>& poly) {
   bool in = false;
   for (std::size_t a = 0, b = poly.size() - 1; a < poly.size(); b = a++) {
     const Vec2 &pa = poly[a], &pb = poly[b];
-    if ((pa.z > p.z) != (pb.z > p.z) &&
-        p.x < (pb.x - pa.x) * (p.z - pa.z) / (pb.z - pa.z) + pa.x)
+    if ((pa.z > p.z) != (pb.z > p.z) && p.x < (pb.x - pa.x) * (p.z - pa.z) / (pb.z - pa.z) + pa.x)
       in = !in;
   }
   return in;
@@ -311,7 +306,8 @@ bool SolidLocator::inside(Vec2 p, Vec2* surface, Vec2* normal) const {
     if (un < n_solids) {
       const auto& pl = scene_.placements[un];
       if (!pl.shape->contains(pl.pose.to_body(p))) continue;
-      if (surface || normal) nearest_on_boundary(p, geometry::world_boundary(*pl.shape, pl.pose), q, nrm);
+      if (surface || normal)
+        nearest_on_boundary(p, geometry::world_boundary(*pl.shape, pl.pose), q, nrm);
     } else {
       const auto& poly = obstacle_polys_[un - n_solids];
       if (!in_polygon(p, poly)) continue;
@@ -344,8 +340,11 @@ std::vector<dem::Contact> all_contacts(const dem::DemSolver& dem, const core::Co
   const auto all = comm.all_gather(mine);
   std::vector<dem::Contact> out;
   for (std::size_t n = 0; n + 7 <= all.size(); n += 7)
-    out.push_back({static_cast<std::int64_t>(all[n]), static_cast<std::int64_t>(all[n + 1]),
-                   {all[n + 2], all[n + 3]}, {all[n + 4], all[n + 5]}, all[n + 6]});
+    out.push_back({static_cast<std::int64_t>(all[n]),
+                   static_cast<std::int64_t>(all[n + 1]),
+                   {all[n + 2], all[n + 3]},
+                   {all[n + 4], all[n + 5]},
+                   all[n + 6]});
   std::sort(out.begin(), out.end(), [](const dem::Contact& a, const dem::Contact& b) {
     return std::tie(a.id_i, a.id_j, a.point.x, a.point.z) <
            std::tie(b.id_i, b.id_j, b.point.x, b.point.z);

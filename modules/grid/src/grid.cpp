@@ -15,12 +15,16 @@ void GridSpec::cell_of(const Vec2& p, int& i, int& k) const {
 }
 
 void declare_parameters(core::ParamSchema& schema) {
-  schema.section("grid", "The tank and its staggered grid of square cells. The tank walls are the "
-                         "grid's outer faces.");
+  schema.section("grid",
+                 "The tank and its staggered grid of square cells. The tank walls are the "
+                 "grid's outer faces.");
   schema.real("grid/length", 1.0, "tank length along x [m]").positive();
   schema.real("grid/height", 1.0, "tank height along z [m]").positive();
-  schema.real("grid/cell_size", 0.01, "cell size h [m]; length and height are rounded to whole "
-                                      "cells").positive();
+  schema
+      .real("grid/cell_size", 0.01,
+            "cell size h [m]; length and height are rounded to whole "
+            "cells")
+      .positive();
   schema.reals("grid/origin", {0.0, 0.0}, "position (x, z) of the tank's lower-left corner [m]")
       .size(2, 2);
   schema.integer("grid/ranks_x", 0, "ranks along x (0: chosen to cut the fewest faces)")
@@ -54,8 +58,7 @@ namespace {
 std::vector<int> split(int n, int parts) {
   std::vector<int> starts(static_cast<std::size_t>(parts) + 1);
   for (int p = 0; p <= parts; ++p)
-    starts[static_cast<std::size_t>(p)] =
-        static_cast<int>(static_cast<long long>(n) * p / parts);
+    starts[static_cast<std::size_t>(p)] = static_cast<int>(static_cast<long long>(n) * p / parts);
   return starts;
 }
 }  // namespace
@@ -70,7 +73,8 @@ Decomposition::Decomposition(const GridSpec& spec, core::Comm comm, int halo, in
       if (p % a) continue;
       const int b = p / a;
       if (spec.nx / a < halo + 1 || spec.nz / b < halo + 1) continue;
-      const long long cost = static_cast<long long>(a - 1) * spec.nz + static_cast<long long>(b - 1) * spec.nx;
+      const long long cost =
+          static_cast<long long>(a - 1) * spec.nz + static_cast<long long>(b - 1) * spec.nx;
       if (cost < best) best = cost, px = a, pz = b;
     }
   } else if (px <= 0) {

@@ -88,14 +88,18 @@ TEST(CoupledRanks, CylinderDamBreakOneAndTwoRanks) {
   ASSERT_EQ(a.solids.size(), 33u * 6u);
   double dx = 0.0, dv = 0.0;
   for (std::size_t n = 0; n < a.solids.size(); n += 6) {
-    dx = std::max({dx, std::abs(a.solids[n] - b.solids[n]), std::abs(a.solids[n + 1] - b.solids[n + 1])});
-    dv = std::max({dv, std::abs(a.solids[n + 3] - b.solids[n + 3]), std::abs(a.solids[n + 4] - b.solids[n + 4])});
+    dx = std::max(
+        {dx, std::abs(a.solids[n] - b.solids[n]), std::abs(a.solids[n + 1] - b.solids[n + 1])});
+    dv = std::max({dv, std::abs(a.solids[n + 3] - b.solids[n + 3]),
+                   std::abs(a.solids[n + 4] - b.solids[n + 4])});
   }
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   if (rank == 0)
-    std::printf("coupled, 50 steps, 1 vs 2 ranks: max position difference %.3e m, velocity %.3e m/s, "
-                "volume %.12g / %.12g\n", dx, dv, a.d.fluid_volume, b.d.fluid_volume);
+    std::printf(
+        "coupled, 50 steps, 1 vs 2 ranks: max position difference %.3e m, velocity %.3e m/s, "
+        "volume %.12g / %.12g\n",
+        dx, dv, a.d.fluid_volume, b.d.fluid_volume);
   EXPECT_LT(dx, 0.005 * 1e-6);
   EXPECT_LT(dv, 1e-6);
   EXPECT_NEAR(a.d.fluid_volume, b.d.fluid_volume, 1e-6 * a.d.fluid_volume);

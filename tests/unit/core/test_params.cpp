@@ -2,8 +2,8 @@
 // allowed, and is an InputError (the driver turns it into a non-zero exit, never a crash).
 #include <gtest/gtest.h>
 
-#include "picdem/core/error.hpp"
 #include <Teuchos_ParameterList.hpp>
+#include "picdem/core/error.hpp"
 
 #include "picdem/core/params.hpp"
 
@@ -43,7 +43,8 @@ void expect_error(const std::string& text, std::initializer_list<const char*> pa
                   std::vector<std::string> overrides = {}) {
   const std::string msg = error_of(text, overrides);
   ASSERT_FALSE(msg.empty()) << "accepted bad input:\n" << text;
-  for (const char* p : parts) EXPECT_NE(msg.find(p), std::string::npos) << "'" << p << "' not in: " << msg;
+  for (const char* p : parts)
+    EXPECT_NE(msg.find(p), std::string::npos) << "'" << p << "' not in: " << msg;
 }
 }  // namespace
 
@@ -60,9 +61,9 @@ TEST(Params, ValidFileResolvesWithDefaults) {
 }
 
 TEST(Params, OverridesAndPassthroughMerge) {
-  auto p = read_case_text(
-      "time:\n  end: 1\nsolver:\n  MueLu:\n    \"smoother: type\": RELAXATION\n", "case.yaml",
-      {"grid/nx=20", "fluid/walls=no_slip"}, schema());
+  auto p =
+      read_case_text("time:\n  end: 1\nsolver:\n  MueLu:\n    \"smoother: type\": RELAXATION\n",
+                     "case.yaml", {"grid/nx=20", "fluid/walls=no_slip"}, schema());
   EXPECT_EQ(p.integer("grid/nx"), 20);
   EXPECT_EQ(p.string("fluid/walls"), "no_slip");
   EXPECT_EQ(p.teuchos("solver/MueLu").get<std::string>("smoother: type"), "RELAXATION");
@@ -83,7 +84,9 @@ TEST(ParamsBad, UnknownKeySuggestsSpelling) {
   expect_error("time:\n  end: 1\nfluid:\n  densty: 1000\n",
                {"unknown key 'fluid/densty'", "did you mean 'fluid/density'", "density"});
 }
-TEST(ParamsBad, UnknownSection) { expect_error("time:\n  end: 1\nfluids: {}\n", {"unknown key 'fluids'"}); }
+TEST(ParamsBad, UnknownSection) {
+  expect_error("time:\n  end: 1\nfluids: {}\n", {"unknown key 'fluids'"});
+}
 TEST(ParamsBad, WrongTypeTextForReal) {
   expect_error("time:\n  end: 1\nfluid:\n  density: heavy\n",
                {"'fluid/density'", "expects a real number", "heavy"});
@@ -110,7 +113,8 @@ TEST(ParamsBad, BooleanGivenNumber) {
   expect_error("time:\n  end: 1\noutput:\n  png: 3\n", {"'output/png'", "true or false", "3"});
 }
 TEST(ParamsBad, ArrayWrongSize) {
-  expect_error("time:\n  end: 1\ngrid:\n  origin: [0, 0, 0]\n", {"'grid/origin'", "3 values", "2 values"});
+  expect_error("time:\n  end: 1\ngrid:\n  origin: [0, 0, 0]\n",
+               {"'grid/origin'", "3 values", "2 values"});
 }
 TEST(ParamsBad, ScalarForArray) {
   expect_error("time:\n  end: 1\ngrid:\n  origin: 0.5\n", {"'grid/origin'", "list of reals"});
@@ -119,20 +123,34 @@ TEST(ParamsBad, SectionGivenValue) {
   expect_error("time:\n  end: 1\nfluid: 3\n", {"'fluid' is a section", "density"});
 }
 TEST(ParamsBad, ValueGivenSection) {
-  expect_error("time:\n  end: 1\nfluid:\n  density:\n    a: 1\n", {"'fluid/density'", "not a section"});
+  expect_error("time:\n  end: 1\nfluid:\n  density:\n    a: 1\n",
+               {"'fluid/density'", "not a section"});
 }
-TEST(ParamsBad, MissingRequired) { expect_error("fluid:\n  density: 1000\n", {"missing required key 'time/end'"}); }
-TEST(ParamsBad, EmptyFile) { expect_error("", {"empty case file"}); }
-TEST(ParamsBad, OnlyComments) { expect_error("# nothing here\n\n", {"empty case file"}); }
-TEST(ParamsBad, NotYaml) { expect_error("time: [1, 2\nfluid: {\n", {"not valid YAML", "line"}); }
-TEST(ParamsBad, PlainTextNotYaml) { expect_error("this is not a case file\n", {"not valid YAML"}); }
-TEST(ParamsBad, NulBytes) { expect_error(std::string("time:\n  end: 1\n\0\0", 16), {"NUL"}); }
+TEST(ParamsBad, MissingRequired) {
+  expect_error("fluid:\n  density: 1000\n", {"missing required key 'time/end'"});
+}
+TEST(ParamsBad, EmptyFile) {
+  expect_error("", {"empty case file"});
+}
+TEST(ParamsBad, OnlyComments) {
+  expect_error("# nothing here\n\n", {"empty case file"});
+}
+TEST(ParamsBad, NotYaml) {
+  expect_error("time: [1, 2\nfluid: {\n", {"not valid YAML", "line"});
+}
+TEST(ParamsBad, PlainTextNotYaml) {
+  expect_error("this is not a case file\n", {"not valid YAML"});
+}
+TEST(ParamsBad, NulBytes) {
+  expect_error(std::string("time:\n  end: 1\n\0\0", 16), {"NUL"});
+}
 TEST(ParamsBad, FamilyUnknownType) {
   expect_error("time:\n  end: 1\nobstacles:\n  w:\n    type: cone\n",
                {"'obstacles/w/type'", "'cone'", "box"});
 }
 TEST(ParamsBad, FamilyMissingType) {
-  expect_error("time:\n  end: 1\nobstacles:\n  w:\n    hi: [1, 1]\n", {"'obstacles/w'", "needs a key 'type'"});
+  expect_error("time:\n  end: 1\nobstacles:\n  w:\n    hi: [1, 1]\n",
+               {"'obstacles/w'", "needs a key 'type'"});
 }
 TEST(ParamsBad, FamilyUnknownKey) {
   expect_error("time:\n  end: 1\nobstacles:\n  w:\n    type: box\n    high: [1, 1]\n",

@@ -8,7 +8,9 @@ using namespace picdem;
 using namespace picdem::grid;
 
 namespace {
-double tag(Stagger s, int i, int k) { return 1000.0 * static_cast<int>(s) + 100.0 * i + k; }
+double tag(Stagger s, int i, int k) {
+  return 1000.0 * static_cast<int>(s) + 100.0 * i + k;
+}
 }  // namespace
 
 class HaloTest : public ::testing::TestWithParam<Stagger> {};

@@ -33,15 +33,18 @@ TEST(Archimedes, FloatingBoxSettlesAtItsDraft) {
     if (sim.time() < 0.5 * t_end) continue;
     const auto box = sim.solids().at(0);
     const double level = sim.surface_height(0.02);  // far from the box
-    const double bottom = box.x.z - 0.5 * H * std::cos(box.theta) - 0.5 * W * std::abs(std::sin(box.theta));
+    const double bottom =
+        box.x.z - 0.5 * H * std::cos(box.theta) - 0.5 * W * std::abs(std::sin(box.theta));
     sum += level - bottom;
     ++n;
     worst_tilt = std::max(worst_tilt, std::abs(box.theta));
   }
   const double draft = sum / n;
   if (comm.is_root())
-    std::printf("floating box: mean draft %.5f m over the second half (expected %.5f, %.2f cells off), "
-                "largest tilt %.2e rad\n", draft, expected, (draft - expected) / h, worst_tilt);
+    std::printf(
+        "floating box: mean draft %.5f m over the second half (expected %.5f, %.2f cells off), "
+        "largest tilt %.2e rad\n",
+        draft, expected, (draft - expected) / h, worst_tilt);
   EXPECT_NEAR(draft, expected, 0.25 * h);
   EXPECT_LT(worst_tilt, 0.05);
 }
@@ -76,7 +79,8 @@ TEST(Archimedes, NeutralDiskStaysPutAndLoadMatchesPressureIntegral) {
   const auto end = sim.solids().at(0);
   const double h = params.real("grid/cell_size"), r = 0.01, rho = 1000.0, g = 9.81;
   const double drift = core::norm(end.x - start.x);
-  if (comm.is_root()) std::printf("neutral disk: drift %.3e m in 1 s (%.3f cells)\n", drift, drift / h);
+  if (comm.is_root())
+    std::printf("neutral disk: drift %.3e m in 1 s (%.3f cells)\n", drift, drift / h);
   EXPECT_LT(drift, 0.1 * h);
 
   // J p against an independent quadrature of -int p n dl: 720 points on the circle, p from the
@@ -95,8 +99,9 @@ TEST(Archimedes, NeutralDiskStaysPutAndLoadMatchesPressureIntegral) {
   }
   const double buoyancy = rho * g * M_PI * r * r;
   if (comm.is_root())
-    std::printf("neutral disk: J p = (%.5f, %.5f) N/m, boundary integral (%.5f, %.5f), rho g A = %.5f\n",
-                load.force.x, load.force.z, integral.x, integral.z, buoyancy);
+    std::printf(
+        "neutral disk: J p = (%.5f, %.5f) N/m, boundary integral (%.5f, %.5f), rho g A = %.5f\n",
+        load.force.x, load.force.z, integral.x, integral.z, buoyancy);
   EXPECT_NEAR(load.force.z, integral.z, 0.02 * buoyancy);
   EXPECT_NEAR(load.force.x, integral.x, 0.02 * buoyancy);
   EXPECT_NEAR(load.force.z, buoyancy, 0.02 * buoyancy);

@@ -19,8 +19,8 @@ namespace {
 struct Outcome {
   double arrival = std::numeric_limits<double>::infinity();  // first contact with the right wall
   double worst_volume = 0.0;                                 // relative change
-  double worst_overlap_over_gap = 0.0;                       // max delta / gap (1: boundaries touch)
-  double peak_specific_ke = 0.0;                             // cylinders, J/kg
+  double worst_overlap_over_gap = 0.0;  // max delta / gap (1: boundaries touch)
+  double peak_specific_ke = 0.0;        // cylinders, J/kg
 };
 
 Outcome run(int layers, double beta) {
@@ -51,10 +51,11 @@ Outcome run(int layers, double beta) {
     if (right + gap >= L && sim.time() < o.arrival) o.arrival = sim.time();
   }
   if (comm.is_root())
-    std::printf("%d layers, beta %.1f: arrival %.3f s, volume change %.2f%%, max overlap %.2f gap, "
-                "peak cylinder KE %.4f J/kg\n",
-                layers, beta, o.arrival, 100 * o.worst_volume, o.worst_overlap_over_gap,
-                o.peak_specific_ke);
+    std::printf(
+        "%d layers, beta %.1f: arrival %.3f s, volume change %.2f%%, max overlap %.2f gap, "
+        "peak cylinder KE %.4f J/kg\n",
+        layers, beta, o.arrival, 100 * o.worst_volume, o.worst_overlap_over_gap,
+        o.peak_specific_ke);
   return o;
 }
 }  // namespace

@@ -62,12 +62,15 @@ TEST(DamBreak, SurgeFrontAgainstMartinMoyce) {
     double worst = 0.0;
     for (const auto& p : exp)
       if (p.tau <= 3.0)
-        worst = std::max(worst, std::abs(interpolate(tau, front, p.tau - s) - p.z_over_a) / p.z_over_a);
+        worst =
+            std::max(worst, std::abs(interpolate(tau, front, p.tau - s) - p.z_over_a) / p.z_over_a);
     if (worst < best) best = worst, best_shift = s;
   }
   if (comm.is_root()) {
-    std::printf("dam break: worst front error for tau <= 3 = %.2f%% with shift %.2f; worst volume "
-                "change %.3f%%\n", 100 * best, best_shift, 100 * worst_volume);
+    std::printf(
+        "dam break: worst front error for tau <= 3 = %.2f%% with shift %.2f; worst volume "
+        "change %.3f%%\n",
+        100 * best, best_shift, 100 * worst_volume);
     std::ofstream out("dam_break_front.csv");
     out << "tau,front_over_a\n";
     for (std::size_t n = 0; n < tau.size(); ++n) out << tau[n] << "," << front[n] << "\n";

@@ -26,24 +26,52 @@ struct Vec2 {
   }
 };
 
-constexpr Vec2 operator+(Vec2 a, const Vec2& b) { return a += b; }
-constexpr Vec2 operator-(Vec2 a, const Vec2& b) { return a -= b; }
-constexpr Vec2 operator-(const Vec2& a) { return {-a.x, -a.z}; }
-constexpr Vec2 operator*(double s, Vec2 a) { return a *= s; }
-constexpr Vec2 operator*(Vec2 a, double s) { return a *= s; }
-constexpr Vec2 operator/(Vec2 a, double s) { return {a.x / s, a.z / s}; }
-constexpr bool operator==(const Vec2& a, const Vec2& b) { return a.x == b.x && a.z == b.z; }
-constexpr bool operator!=(const Vec2& a, const Vec2& b) { return !(a == b); }
+constexpr Vec2 operator+(Vec2 a, const Vec2& b) {
+  return a += b;
+}
+constexpr Vec2 operator-(Vec2 a, const Vec2& b) {
+  return a -= b;
+}
+constexpr Vec2 operator-(const Vec2& a) {
+  return {-a.x, -a.z};
+}
+constexpr Vec2 operator*(double s, Vec2 a) {
+  return a *= s;
+}
+constexpr Vec2 operator*(Vec2 a, double s) {
+  return a *= s;
+}
+constexpr Vec2 operator/(Vec2 a, double s) {
+  return {a.x / s, a.z / s};
+}
+constexpr bool operator==(const Vec2& a, const Vec2& b) {
+  return a.x == b.x && a.z == b.z;
+}
+constexpr bool operator!=(const Vec2& a, const Vec2& b) {
+  return !(a == b);
+}
 
-constexpr double dot(const Vec2& a, const Vec2& b) { return a.x * b.x + a.z * b.z; }
+constexpr double dot(const Vec2& a, const Vec2& b) {
+  return a.x * b.x + a.z * b.z;
+}
 /// Scalar 2D cross product a x b (the out-of-plane component).
-constexpr double cross(const Vec2& a, const Vec2& b) { return a.x * b.z - a.z * b.x; }
+constexpr double cross(const Vec2& a, const Vec2& b) {
+  return a.x * b.z - a.z * b.x;
+}
 /// omega x r for an out-of-plane angular velocity omega.
-constexpr Vec2 cross(double omega, const Vec2& r) { return {-omega * r.z, omega * r.x}; }
+constexpr Vec2 cross(double omega, const Vec2& r) {
+  return {-omega * r.z, omega * r.x};
+}
 /// The vector rotated by +90 degrees.
-constexpr Vec2 perp(const Vec2& a) { return {-a.z, a.x}; }
-inline double norm(const Vec2& a) { return std::hypot(a.x, a.z); }
-constexpr double norm2(const Vec2& a) { return dot(a, a); }
+constexpr Vec2 perp(const Vec2& a) {
+  return {-a.z, a.x};
+}
+inline double norm(const Vec2& a) {
+  return std::hypot(a.x, a.z);
+}
+constexpr double norm2(const Vec2& a) {
+  return dot(a, a);
+}
 inline Vec2 rotate(const Vec2& a, double angle) {
   const double c = std::cos(angle), s = std::sin(angle);
   return {c * a.x - s * a.z, s * a.x + c * a.z};

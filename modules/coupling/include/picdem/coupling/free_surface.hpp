@@ -22,6 +22,7 @@ void particle_occupancy(const particles::ParticleSet& ps, const grid::Decomposit
 
 /// Area where the bilinear interpolant of S between cell centres exceeds 1/2, summed over the
 /// owned cells of every rank (S needs a current halo).
-double occupied_area(const grid::CellField& S, const grid::Decomposition& d, const core::Comm& comm);
+double occupied_area(const grid::CellField& S, const grid::Decomposition& d,
+                     const core::Comm& comm);
 
 }  // namespace picdem::coupling

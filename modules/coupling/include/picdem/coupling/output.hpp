@@ -19,7 +19,7 @@ class DemSolver;
 namespace picdem::io {
 class FrameWriter;
 class CsvWriter;
-}
+}  // namespace picdem::io
 
 namespace picdem::coupling {
 

@@ -19,11 +19,11 @@ struct Diagnostics {
   double t = 0.0;
   double dt = 0.0;
   long long step = 0;
-  double fluid_volume = 0.0;    ///< area inside the particles' free surface [m^2] (free_surface.hpp)
+  double fluid_volume = 0.0;  ///< area inside the particles' free surface [m^2] (free_surface.hpp)
   double kinetic_energy = 0.0;  ///< fluid, from the particles, per unit depth [J/m]
   int ppe_iterations = 0;
   double ppe_residual = 0.0;
-  double front_x = 0.0;         ///< largest x of any fluid particle, from the left wall [m]
+  double front_x = 0.0;  ///< largest x of any fluid particle, from the left wall [m]
   long long particles = 0;
   double max_speed = 0.0;
   double solid_kinetic_energy = 0.0;

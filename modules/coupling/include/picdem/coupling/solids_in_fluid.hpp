@@ -45,20 +45,16 @@ struct QuadratureOptions {
 /// joined by id in the solver): a_{s,c} = (int n dl, int r x n dl), M_s, and
 /// V* = V^n + dt M^-1 (F_g + F_coll + F_q) with F_coll the collision loads predicted at level n
 /// and F_q the hydrostatic quadrature load.
-std::vector<fluid::SolidCoupling> solid_couplings(const SolidScene& scene,
-                                                  const geometry::CutCells& cut,
-                                                  const fluid::CellStates& cells,
-                                                  const grid::Decomposition& d,
-                                                  const std::vector<core::SolidLoads>& collision,
-                                                  const QuadratureOptions& quadrature, double dt,
-                                                  const core::Comm& comm);
+std::vector<fluid::SolidCoupling> solid_couplings(
+    const SolidScene& scene, const geometry::CutCells& cut, const fluid::CellStates& cells,
+    const grid::Decomposition& d, const std::vector<core::SolidLoads>& collision,
+    const QuadratureOptions& quadrature, double dt, const core::Comm& comm);
 
 /// Pressure loads J p + F_q, J p = -sum_c a_{s,c} p_c, on every owned solid of `dem` (summed
 /// over ranks).
 std::vector<core::SolidLoads> fluid_loads(const SolidScene& scene, const geometry::CutCells& cut,
-                                          const fluid::CellStates& cells,
-                                          const grid::CellField& p, const grid::Decomposition& d,
-                                          const dem::DemSolver& dem,
+                                          const fluid::CellStates& cells, const grid::CellField& p,
+                                          const grid::Decomposition& d, const dem::DemSolver& dem,
                                           const QuadratureOptions& quadrature,
                                           const core::Comm& comm);
 

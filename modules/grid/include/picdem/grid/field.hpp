@@ -17,7 +17,10 @@ class GridArray {
  public:
   GridArray() = default;
   GridArray(const Decomposition& d, Stagger s, T init = T{})
-      : stagger_(s), owned_(d.owned(s)), box_(d.storage(s)), nxs_(box_.nx()),
+      : stagger_(s),
+        owned_(d.owned(s)),
+        box_(d.storage(s)),
+        nxs_(box_.nx()),
         data_(static_cast<std::size_t>(box_.size()), init) {}
 
   T& operator()(int i, int k) { return data_[index(i, k)]; }
@@ -91,12 +94,12 @@ class Halo {
       const IndexBox& in = reverse ? ls[n].mine_in_theirs : ls[n].theirs_in_mine;
       recv[n].resize(static_cast<std::size_t>(in.size()));
       req.emplace_back();
-      MPI_Irecv(recv[n].data(), static_cast<int>(recv[n].size() * sizeof(T)), MPI_BYTE,
-                ls[n].rank, tag, comm_, &req.back());
+      MPI_Irecv(recv[n].data(), static_cast<int>(recv[n].size() * sizeof(T)), MPI_BYTE, ls[n].rank,
+                tag, comm_, &req.back());
       pack(f, out, send[n]);
       req.emplace_back();
-      MPI_Isend(send[n].data(), static_cast<int>(send[n].size() * sizeof(T)), MPI_BYTE,
-                ls[n].rank, tag, comm_, &req.back());
+      MPI_Isend(send[n].data(), static_cast<int>(send[n].size() * sizeof(T)), MPI_BYTE, ls[n].rank,
+                tag, comm_, &req.back());
     }
     MPI_Waitall(static_cast<int>(req.size()), req.data(), MPI_STATUSES_IGNORE);
     for (std::size_t n = 0; n < ls.size(); ++n) {
