@@ -84,6 +84,7 @@ Simulation::Simulation(core::Comm comm, core::Params params, std::string output_
                                              rank_regions(d), tank, polys);
     s.dem->add_solids(solids);
   }
+  s.has_bodies = s.dem || !s.obstacles.empty();
 
   if (s.has_fluid) {
     s.fluid_cfg = fluid::config_from(params);
@@ -164,11 +165,13 @@ double choose_time_step(SimulationState& s) {
   return dt;
 }
 
-// geometry: solids at X^n -> cut cells, face apertures E, wetted boundary pieces.
+// geometry: solids at X^n -> cut cells, face apertures E, wetted boundary pieces. Built on every
+// rank of a run with bodies, also where none is near this step: a rank a solid has just left
+// must not keep its old apertures, nor one it is about to enter lack cut cells.
 void place_solids(SimulationState& s) {
   core::ScopedTimer timer("geometry");
   s.scene = scene_of(s.dem.get(), s.obstacles);
-  if (s.scene.placements.empty() && s.scene.obstacles.empty()) return;
+  if (!s.has_bodies) return;
   s.cut = cut_cells(s.scene, *s.decomp, s.params.real("coupling/tiny_cell_fraction"), s.apertures);
 }
 
@@ -181,7 +184,7 @@ void mark_cells(SimulationState& s) {
   particles::count_per_cell(s.particles, *s.halo, s.count);
   particle_occupancy(s.particles, *s.decomp, *s.halo,
                      s.particle_cfg.per_cell_1d * s.particle_cfg.per_cell_1d, s.occupancy);
-  const bool cut = !s.scene.placements.empty() || !s.scene.obstacles.empty();
+  const bool cut = s.has_bodies;
   const auto b = s.cells.storage();
   const auto ext = s.spec.extent(Stagger::Cell);
   const double tent[3] = {0.125, 0.75, 0.125};  // the tent's mass in the cell and either neighbour
@@ -215,7 +218,7 @@ void mark_cells(SimulationState& s) {
 // carry its rigid velocity; then velocities are extended into the rest.
 void extend(SimulationState& s, FaceField& u, FaceField& w) {
   fluid::fluid_faces(s.cells, s.apertures, s.u_valid, s.w_valid);
-  if (!s.scene.placements.empty() || !s.scene.obstacles.empty())
+  if (s.has_bodies)
     rigid_face_velocities(s.scene, s.cut, s.apertures, *s.decomp, u, w, s.u_valid, s.w_valid);
   fluid::extend_velocity(u, w, s.u_valid, s.w_valid, s.decomp->halo(), *s.halo);
 }
@@ -282,11 +285,12 @@ void advance_solids(SimulationState& s, double dt) {
 void grid_to_particles(SimulationState& s) {
   core::ScopedTimer timer("transfer: grid to particles");
   // Faces closed by solids carry the solids' new rigid velocities, in u_old as well: the FLIP
-  // increment u - u_old is the fluid's change only, not a body sweeping over a face.
-  s.scene = scene_of(s.dem.get(), s.obstacles);
+  // increment u - u_old is the fluid's change only, not a body sweeping over a face. The scene
+  // keeps the cut cells' body order (solids may have migrated between ranks in the DEM).
+  s.scene = advanced_scene(s.scene, s.dem.get());
   extend(s, s.u, s.w);
   fluid::enforce_walls(s.u, s.w, s.fluid_cfg, *s.decomp);
-  if (!s.scene.placements.empty() || !s.scene.obstacles.empty()) {
+  if (s.has_bodies) {
     const auto& spec = s.spec;
     const auto bu = s.u.storage(), bw = s.w.storage();
     for (int k = bu.k0; k < bu.k1; ++k)
@@ -305,7 +309,7 @@ void grid_to_particles(SimulationState& s) {
 void advect_particles(SimulationState& s, double dt) {
   core::ScopedTimer timer("advect");
   const SolidLocator locator(s.scene);
-  const bool solids = !s.scene.placements.empty() || !s.scene.obstacles.empty();
+  const bool solids = s.has_bodies;
   const double h = s.spec.h;
   std::function<void(double&, double&)> out_of_solids;
   if (solids)

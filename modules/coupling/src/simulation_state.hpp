@@ -50,8 +50,9 @@ struct SimulationState {
   // solids
   std::vector<geometry::Obstacle> obstacles;
   std::unique_ptr<dem::DemSolver> dem;
-  SolidScene scene;  // poses at the start of the step (cut cells)
-  geometry::CutCells cut;
+  bool has_bodies = false;  // solids or obstacles anywhere in the run (every rank alike)
+  SolidScene scene;         // poses at the start of the step (cut cells), then after the DEM
+  geometry::CutCells cut;   // at the start-of-step poses; cut body b is scene.placements[b]
   std::vector<core::SolidLoads> collision_loads, fluid_loads;
   double beta = 1.0;
   QuadratureOptions quadrature;

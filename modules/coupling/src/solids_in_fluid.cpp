@@ -28,6 +28,28 @@ SolidScene scene_of(const dem::DemSolver* dem, const std::vector<geometry::Obsta
   return scene;
 }
 
+SolidScene advanced_scene(const SolidScene& before, const dem::DemSolver* dem) {
+  if (!dem) return before;
+  const SolidScene now = scene_of(dem, before.obstacles);
+  std::unordered_map<std::int64_t, std::size_t> where;
+  for (std::size_t n = 0; n < now.states.size(); ++n) where.emplace(now.states[n].id, n);
+  SolidScene out;
+  out.obstacles = before.obstacles;
+  out.placements = before.placements;
+  out.states = before.states;
+  std::vector<char> taken(now.states.size(), 0);
+  for (std::size_t b = 0; b < out.states.size(); ++b) {
+    const auto it = where.find(out.states[b].id);
+    if (it == where.end()) continue;
+    out.states[b] = now.states[it->second];
+    out.placements[b] = now.placements[it->second];
+    taken[it->second] = 1;
+  }
+  for (std::size_t n = 0; n < now.states.size(); ++n)
+    if (!taken[n]) out.placements.push_back(now.placements[n]), out.states.push_back(now.states[n]);
+  return out;
+}
+
 geometry::CutCells cut_cells(const SolidScene& scene, const grid::Decomposition& d,
                              double tiny_fraction, fluid::Apertures& apertures) {
   const auto& spec = d.spec();

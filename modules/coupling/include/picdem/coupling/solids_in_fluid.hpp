@@ -26,6 +26,11 @@ struct SolidScene {
 
 SolidScene scene_of(const dem::DemSolver* dem, const std::vector<geometry::Obstacle>& obstacles);
 
+/// The scene after the DEM has moved the solids: `before`'s solids in the same order (the cut
+/// cells built from `before` index them), with their new states, then solids new to this rank.
+/// A solid no longer seen here keeps its old state.
+SolidScene advanced_scene(const SolidScene& before, const dem::DemSolver* dem);
+
 /// Cut cells over this rank's storage window; apertures = min(tank apertures, cut-cell E).
 geometry::CutCells cut_cells(const SolidScene& scene, const grid::Decomposition& d,
                              double tiny_fraction, fluid::Apertures& apertures);
