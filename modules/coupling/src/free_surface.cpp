@@ -44,8 +44,29 @@ void particle_occupancy(const particles::ParticleSet& ps, const grid::Decomposit
   halo.forward(S);
 }
 
+void open_share_correction(grid::CellField& S, const geometry::CutCells& cut,
+                           const grid::Decomposition& d) {
+  const auto b = S.storage();
+  const auto ext = d.spec().extent(grid::Stagger::Cell);
+  const double tent[3] = {0.125, 0.75, 0.125};  // the tent's mass in the cell and either neighbour
+  grid::CellField out = S;
+  for (int k = b.k0; k < b.k1; ++k)
+    for (int i = b.i0; i < b.i1; ++i) {
+      double open = 0.0, all = 0.0;
+      for (int bb = -1; bb <= 1; ++bb)
+        for (int aa = -1; aa <= 1; ++aa) {
+          if (!ext.contains(i + aa, k + bb) || !S.in_storage(i + aa, k + bb)) continue;
+          const double wgt = tent[aa + 1] * tent[bb + 1];
+          open += wgt * cut.fluid_fraction(i + aa, k + bb);
+          all += wgt;
+        }
+      if (open > 0.05 * all) out(i, k) = S(i, k) * all / open;
+    }
+  S = std::move(out);
+}
+
 double occupied_area(const grid::CellField& S, const grid::Decomposition& d,
-                     const core::Comm& comm) {
+                     const core::Comm& comm, const geometry::CutCells* cut) {
   const auto& spec = d.spec();
   const auto own = d.owned_cells();
   // S at a centre, mirrored across the tank walls.
@@ -62,11 +83,12 @@ double occupied_area(const grid::CellField& S, const grid::Decomposition& d,
       for (int b = -1; b <= 1; ++b)
         for (int a = -1; a <= 1; ++a)
           lo = std::min(lo, at(i + a, k + b)), hi = std::max(hi, at(i + a, k + b));
+      const double f = cut ? cut->fluid_fraction(i, k) : 1.0;
       if (lo > 0.5) {
-        area_cells += 1.0;
+        area_cells += f;
         continue;
       }
-      if (hi <= 0.5) continue;
+      if (hi <= 0.5 || f <= 0.0) continue;
       int inside = 0;
       for (int q = 0; q < sub; ++q)
         for (int r = 0; r < sub; ++r) {
@@ -79,7 +101,7 @@ double occupied_area(const grid::CellField& S, const grid::Decomposition& d,
               (1 - fx) * fz * at(i + a, k + b + 1) + fx * fz * at(i + a + 1, k + b + 1);
           inside += s > 0.5 ? 1 : 0;
         }
-      area_cells += static_cast<double>(inside) / (sub * sub);
+      area_cells += f * static_cast<double>(inside) / (sub * sub);
     }
   return comm.sum(area_cells) * spec.h * spec.h;
 }

@@ -184,25 +184,14 @@ void mark_cells(SimulationState& s) {
   particles::count_per_cell(s.particles, *s.halo, s.count);
   particle_occupancy(s.particles, *s.decomp, *s.halo,
                      s.particle_cfg.per_cell_1d * s.particle_cfg.per_cell_1d, s.occupancy);
-  const bool cut = s.has_bodies;
+  if (s.has_bodies) open_share_correction(s.occupancy, s.cut, *s.decomp);
   const auto b = s.cells.storage();
-  const auto ext = s.spec.extent(Stagger::Cell);
-  const double tent[3] = {0.125, 0.75, 0.125};  // the tent's mass in the cell and either neighbour
   for (int k = b.k0; k < b.k1; ++k)
     for (int i = b.i0; i < b.i1; ++i) {
       CellState c = s.count(i, k) > 0 ? CellState::Fluid : CellState::Air;
-      double S = s.occupancy(i, k);
-      if (cut) {
+      const double S = s.occupancy(i, k);
+      if (s.has_bodies) {
         const double f = s.cut.fluid_fraction(i, k);
-        double open = 0.0, all = 0.0;
-        for (int bb = -1; bb <= 1; ++bb)
-          for (int aa = -1; aa <= 1; ++aa) {
-            if (!ext.contains(i + aa, k + bb) || !s.cells.in_storage(i + aa, k + bb)) continue;
-            const double wgt = tent[aa + 1] * tent[bb + 1];
-            open += wgt * s.cut.fluid_fraction(i + aa, k + bb);
-            all += wgt;
-          }
-        if (open > 0.05 * all) S *= all / open;
         if (f <= 0.0)
           c = CellState::Solid;
         else if (c == CellState::Air && f < 1.0 && S > 0.5)
@@ -409,7 +398,8 @@ void record_diagnostics(SimulationState& s, double dt) {
   if (s.has_fluid) {
     particle_occupancy(s.particles, *s.decomp, *s.halo,
                        s.particle_cfg.per_cell_1d * s.particle_cfg.per_cell_1d, s.occupancy);
-    g.fluid_volume = occupied_area(s.occupancy, *s.decomp, s.comm);
+    if (s.has_bodies) open_share_correction(s.occupancy, s.cut, *s.decomp);
+    g.fluid_volume = occupied_area(s.occupancy, *s.decomp, s.comm, s.has_bodies ? &s.cut : nullptr);
   }
   g.levels.clear();
   for (double x : s.params.reals("output/level_probes")) g.levels.push_back(surface_height(s, x));

@@ -9,8 +9,14 @@
 //
 // Used for (1) the ghost-fluid Dirichlet condition p = 0 on the surface (Gibou et al. 2002): a
 // face between fluid cell f and air cell a is cut at theta = phi_f / (phi_f - phi_a) of its
-// length, and (2) the fluid volume: the area where the bilinear interpolant of S exceeds 1/2.
+// length, and (2) the fluid volume: the area where the bilinear interpolant of S exceeds 1/2,
+// less what solids cover of it.
+//
+// Next to solids a cell's tent reaches into covered cells that hold no particles: S there is
+// divided by the share of the tent open to fluid (open_share_correction), so that water against a
+// solid reads S = 1 and a body does not read as air.
 #include "picdem/core/comm.hpp"
+#include "picdem/geometry/cut_cells.hpp"
 #include "picdem/grid/field.hpp"
 #include "picdem/particles/particle_set.hpp"
 
@@ -20,9 +26,15 @@ namespace picdem::coupling {
 void particle_occupancy(const particles::ParticleSet& ps, const grid::Decomposition& d,
                         const grid::Halo& halo, int particles_per_cell, grid::CellField& S);
 
+/// S /= (tent mass on open fluid) / (tent mass) over the cell and its eight neighbours, where the
+/// open share exceeds 5%; over the whole storage window (cut cells must cover it).
+void open_share_correction(grid::CellField& S, const geometry::CutCells& cut,
+                           const grid::Decomposition& d);
+
 /// Area where the bilinear interpolant of S between cell centres exceeds 1/2, summed over the
-/// owned cells of every rank (S needs a current halo).
+/// owned cells of every rank (S needs a current halo). With cut cells, each cell's part is
+/// weighted by its fluid fraction: the water's area, without the solids in it.
 double occupied_area(const grid::CellField& S, const grid::Decomposition& d,
-                     const core::Comm& comm);
+                     const core::Comm& comm, const geometry::CutCells* cut = nullptr);
 
 }  // namespace picdem::coupling
