@@ -443,6 +443,31 @@ double Simulation::pressure_at(double x, double z) const {
   return s.comm.sum(mine);
 }
 
+core::Vec2 Simulation::fluid_momentum() const {
+  const SimulationState& s = *s_;
+  double mx = 0.0, mz = 0.0;
+  for (std::size_t n = 0; n < s.particles.size(); ++n) mx += s.particles.u[n], mz += s.particles.w[n];
+  return {s.comm.sum(mx * s.particle_mass), s.comm.sum(mz * s.particle_mass)};
+}
+
+core::Vec2 Simulation::wall_pressure_force() const {
+  const SimulationState& s = *s_;
+  if (!s.has_fluid) return {};
+  const auto own = s.decomp->owned_cells();
+  const auto fluid = static_cast<signed char>(CellState::Fluid);
+  const double h = s.spec.h, rho_g = s.fluid_cfg.rho * s.fluid_cfg.g.z;  // g.z < 0
+  double fx = 0.0, fz = 0.0;
+  for (int k = own.k0; k < own.k1; ++k)
+    for (int i = own.i0; i < own.i1; ++i) {
+      if (s.cells(i, k) != fluid) continue;
+      if (i == 0) fx += s.p(i, k) * h;
+      if (i == s.spec.nx - 1) fx -= s.p(i, k) * h;
+      if (k == 0) fz += (s.p(i, k) - 0.5 * h * rho_g) * h;
+      if (k == s.spec.nz - 1) fz -= (s.p(i, k) + 0.5 * h * rho_g) * h;
+    }
+  return {s.comm.sum(fx), s.comm.sum(fz)};
+}
+
 double Simulation::max_grid_speed() const {
   const SimulationState& s = *s_;
   if (!s.has_fluid) return 0.0;

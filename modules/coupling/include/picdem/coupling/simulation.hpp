@@ -63,6 +63,12 @@ class Simulation {
 
   /// Pressure at a point, sampled from the cell holding it (the owning rank's value on all ranks).
   double pressure_at(double x, double z) const;
+  /// Collective: momentum of the fluid per unit depth, sum of the particles' mass x velocity.
+  core::Vec2 fluid_momentum() const;
+  /// Collective: the force of the fluid's pressure on the tank's walls on the fluid, per unit
+  /// depth: the pressure of the cells next to a wall, carried hydrostatically to it (the bottom's
+  /// half cell), times the wall's length in those cells.
+  core::Vec2 wall_pressure_force() const;
   /// Largest fluid speed on the grid faces next to fluid cells.
   double max_grid_speed() const;
   /// Every solid, ordered by id, on every rank.
