@@ -76,7 +76,14 @@ Args parse(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  picdem::fluid::LinearAlgebraScope scope(&argc, &argv);  // MPI + Kokkos for Tpetra
+  // Kokkos answers --help with its own options: it sees the arguments without it.
+  std::vector<char*> kept;
+  for (int n = 0; n < argc; ++n)
+    if (std::string(argv[n]) != "--help" && std::string(argv[n]) != "-h") kept.push_back(argv[n]);
+  int kept_argc = static_cast<int>(kept.size());
+  kept.push_back(nullptr);
+  char** kept_argv = kept.data();
+  picdem::fluid::LinearAlgebraScope scope(&kept_argc, &kept_argv);  // MPI + Kokkos for Tpetra
   picdem::core::Comm comm;
   try {
     const Args args = parse(argc, argv);

@@ -15,5 +15,11 @@ else
   head -20 /tmp/picdem_param_diff.$$; failed=$((failed + 1))
 fi
 rm -f /tmp/picdem_param_diff.$$
+# --help prints picdem's usage first (not the linear-algebra library's options) and exits 0
+if out=$("$picdem" --help 2>&1) && [ "$(printf '%s\n' "$out" | head -1 | cut -c1-13)" = "usage: picdem" ]; then
+  passed=$((passed + 1))
+else
+  echo "FAIL picdem --help: $(printf '%s\n' "$out" | head -3)"; failed=$((failed + 1))
+fi
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
