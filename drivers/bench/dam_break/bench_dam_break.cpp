@@ -2,6 +2,11 @@
 // ranks it is started with. Prints time per step split by phase, pressure solver iterations and
 // setup/solve split, particles per second through the transfers, and peak memory per rank.
 //   mpirun -n 2 build/drivers/bench/dam_break/bench_dam_break [steps] [N ...]
+// With `coupled`: the 6-layer cylinder dam break (cases/dam_break_cylinders_6_layers) at cell
+// size h (0.5 mm, 20 cells per diameter, by default), and the same water without the cylinders,
+// timed from t0 (0.1 s: the collapse under way) for `steps` steps; adds wall seconds per
+// simulated second.
+//   mpirun -n 2 build/drivers/bench/dam_break/bench_dam_break coupled [steps] [h ...]
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -20,11 +25,83 @@ double peak_rss_mb() {
     if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
   return 0.0;
 }
+
+// Runs to t0, then times `steps` steps and prints the figures under `label`.
+void measure(const picdem::core::Comm& comm, const std::string& label,
+             const picdem::core::Params& params, int steps, double t0) {
+  picdem::coupling::Simulation sim(comm, params, "");
+  for (int s = 0; s < 5 || sim.time() < t0; ++s) sim.step();
+  picdem::core::reset_timers();
+  long long its = 0;
+  double simulated = 0.0;
+  for (int s = 0; s < steps; ++s) {
+    sim.step();
+    its += sim.diagnostics().ppe_iterations;
+    simulated += sim.diagnostics().dt;
+  }
+  const auto t = picdem::core::timer_totals();
+  // The step's phases are the top-level timers; "fluid: ...", "particles: ...", "dem: ...",
+  // "io: ..." are inside them.
+  auto nested = [](const std::string& name) {
+    for (const char* p : {"fluid:", "particles:", "dem:", "io:", "checkpoint:"})
+      if (name.rfind(p, 0) == 0) return true;
+    return false;
+  };
+  double total = 0.0;
+  for (const auto& kv : t)
+    if (!nested(kv.first)) total += kv.second;
+  const double particles = static_cast<double>(sim.diagnostics().particles);
+  const double mem = comm.max(peak_rss_mb());
+  if (comm.is_root()) {
+    std::printf(
+        "\n%s, %.0f particles, from t = %.3f s: %.2f ms/step, %.1f PPE iterations/step, mean dt "
+        "%.3e s, %.1f wall s per simulated s, peak %.0f MB/rank\n",
+        label.c_str(), particles, sim.time() - simulated, 1e3 * total / steps,
+        double(its) / steps, simulated / steps, total / simulated, mem);
+    for (const auto& kv : t)
+      std::printf("  %s%-32s %9.2f ms/step  %5.1f%%\n", nested(kv.first) ? "  " : "",
+                  kv.first.c_str(), 1e3 * kv.second / steps, 100 * kv.second / total);
+    auto get = [&](const char* k) { return t.count(k) ? t.at(k) : 0.0; };
+    const double transfer = get("transfer: particles to grid") + get("transfer: grid to particles");
+    if (transfer > 0)
+      std::printf("  transfers: %.2e particles/s (P2G + G2P)\n", particles * steps / transfer);
+  }
+}
+
+int coupled(const picdem::core::Comm& comm, int argc, char** argv) {
+  const int steps = argc > 2 ? std::atoi(argv[2]) : 20;
+  std::vector<double> sizes;
+  for (int n = 3; n < argc; ++n) sizes.push_back(std::atof(argv[n]));
+  if (sizes.empty()) sizes = {0.0005};
+  const auto schema = picdem::coupling::case_schema();
+  const std::string src = PICDEM_SOURCE_DIR;
+  for (double h : sizes) {
+    const std::vector<std::string> common = {"grid/cell_size=" + std::to_string(h), "time/end=100",
+                                             "output/progress_seconds=1e9"};
+    auto with = common;
+    const auto cylinders = picdem::core::read_case(
+        comm, src + "/cases/dam_break_cylinders_6_layers/case.yaml", with, schema);
+    auto without = common;
+    for (const char* o : {"grid/length=0.286", "grid/height=0.2", "water/column/x=[0.0, 0.066]",
+                          "water/column/z=[0.0, 0.12]", "time/dt_max=0.0005"})
+      without.push_back(o);
+    const auto water = picdem::core::read_case(comm, src + "/cases/dam_break/case.yaml", without,
+                                               schema);
+    char label[128];
+    std::snprintf(label, sizeof label, "6 layers of cylinders, h = %.2f mm", 1e3 * h);
+    measure(comm, label, cylinders, steps, 0.1);
+    std::snprintf(label, sizeof label, "the same water without cylinders, h = %.2f mm", 1e3 * h);
+    measure(comm, label, water, steps, 0.1);
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   picdem::fluid::LinearAlgebraScope scope(&argc, &argv);
   picdem::core::Comm comm;
+  if (argc > 1 && std::string(argv[1]) == "coupled") return coupled(comm, argc, argv);
   const int steps = argc > 1 ? std::atoi(argv[1]) : 20;
   std::vector<int> sizes;
   for (int n = 2; n < argc; ++n) sizes.push_back(std::atoi(argv[n]));
@@ -41,41 +118,7 @@ int main(int argc, char** argv) {
         "grid/cell_size=" + std::to_string(L / n), "time/end=100", "output/progress_seconds=1e9"};
     const auto params = picdem::core::read_case(
         comm, std::string(PICDEM_SOURCE_DIR) + "/cases/dam_break/case.yaml", o, schema);
-    picdem::coupling::Simulation sim(comm, params, "");
-    for (int s = 0; s < 5; ++s) sim.step();
-    picdem::core::reset_timers();
-    long long its = 0;
-    for (int s = 0; s < steps; ++s) {
-      sim.step();
-      its += sim.diagnostics().ppe_iterations;
-    }
-    const auto t = picdem::core::timer_totals();
-    // The step's phases are the top-level timers; "fluid: ...", "particles: ...", "dem: ...",
-    // "io: ..." are inside them.
-    auto nested = [](const std::string& name) {
-      for (const char* p : {"fluid:", "particles:", "dem:", "io:", "checkpoint:"})
-        if (name.rfind(p, 0) == 0) return true;
-      return false;
-    };
-    double total = 0.0;
-    for (const auto& kv : t)
-      if (!nested(kv.first)) total += kv.second;
-    const double particles = static_cast<double>(sim.diagnostics().particles);
-    const double mem = comm.max(peak_rss_mb());
-    if (comm.is_root()) {
-      std::printf(
-          "\n%d^2 cells, %.0f particles: %.2f ms/step, %.1f PPE iterations/step, peak %.0f "
-          "MB/rank\n",
-          n, particles, 1e3 * total / steps, double(its) / steps, mem);
-      for (const auto& kv : t)
-        std::printf("  %s%-32s %9.2f ms/step  %5.1f%%\n", nested(kv.first) ? "  " : "",
-                    kv.first.c_str(), 1e3 * kv.second / steps, 100 * kv.second / total);
-      auto get = [&](const char* k) { return t.count(k) ? t.at(k) : 0.0; };
-      const double transfer =
-          get("transfer: particles to grid") + get("transfer: grid to particles");
-      if (transfer > 0)
-        std::printf("  transfers: %.2e particles/s (P2G + G2P)\n", particles * steps / transfer);
-    }
+    measure(comm, std::to_string(n) + "^2 cells", params, steps, 0.0);
   }
   return 0;
 }

@@ -1,6 +1,7 @@
 // Dam break with 6 and 12 layers of cylinders (paper section 3.2) at 6.7 cells per cylinder
 // diameter (h = 1.5 mm, to keep CI short; the paper's 20 in doc/validation.md), to 0.6 s:
-// - stable, fluid volume within 2%, no body's real boundary crosses another's or a wall's;
+// - stable (a blown-up run throws), no body's real boundary crosses another's or a wall's;
+// - fluid volume within 2% (open: it is not met at this resolution, doc/validation.md);
 // - the first arrival of a cylinder at the right wall, with gap damping (beta 0.5) and without
 //   (beta 1.0): without, the cylinders arrive earlier;
 // - the 12-layer collapse is less violent than the 6-layer one, measured by the peak mean kinetic
@@ -60,13 +61,28 @@ Outcome run(int layers, double beta) {
 }
 }  // namespace
 
-TEST(DamBreakCylinders, SixAndTwelveLayers) {
-  const Outcome six = run(6, 0.5), six_free = run(6, 1.0), twelve = run(12, 0.5);
-  for (const Outcome* o : {&six, &six_free, &twelve}) {
-    EXPECT_LE(o->worst_volume, 0.02);
+// The three runs, made once per process and shared by the tests below.
+struct Runs {
+  Outcome six, six_free, twelve;
+};
+const Runs& runs() {
+  static const Runs r{run(6, 0.5), run(6, 1.0), run(12, 0.5)};
+  return r;
+}
+
+TEST(DamBreakCylinders, StableAndTheFindingsOfThePaper) {
+  const Runs& r = runs();
+  for (const Outcome* o : {&r.six, &r.six_free, &r.twelve})
     EXPECT_LT(o->worst_overlap_over_gap, 1.0);  // real boundaries never cross
-  }
-  EXPECT_TRUE(std::isfinite(six.arrival)) << "no cylinder reached the right wall by 0.6 s";
-  EXPECT_LT(six_free.arrival, six.arrival);  // without gap damping the cylinders arrive earlier
-  EXPECT_LT(twelve.peak_specific_ke, six.peak_specific_ke);
+  EXPECT_TRUE(std::isfinite(r.six.arrival)) << "no cylinder reached the right wall by 0.6 s";
+  EXPECT_LT(r.six_free.arrival, r.six.arrival);  // without gap damping the cylinders arrive earlier
+  EXPECT_LT(r.twelve.peak_specific_ke, r.six.peak_specific_ke);
+}
+
+// Open (doc/validation.md): the fluid volume drifts 12% (6 layers, beta 1.0) and 23% (12 layers).
+TEST(DamBreakCylinders, FluidVolumeWithinTwoPercent) {
+  const Runs& r = runs();
+  EXPECT_LE(r.six.worst_volume, 0.02);
+  EXPECT_LE(r.six_free.worst_volume, 0.02);
+  EXPECT_LE(r.twelve.worst_volume, 0.02);
 }
