@@ -56,8 +56,8 @@ void measure(const picdem::core::Comm& comm, const std::string& label,
     std::printf(
         "\n%s, %.0f particles, from t = %.3f s: %.2f ms/step, %.1f PPE iterations/step, mean dt "
         "%.3e s, %.1f wall s per simulated s, peak %.0f MB/rank\n",
-        label.c_str(), particles, sim.time() - simulated, 1e3 * total / steps,
-        double(its) / steps, simulated / steps, total / simulated, mem);
+        label.c_str(), particles, sim.time() - simulated, 1e3 * total / steps, double(its) / steps,
+        simulated / steps, total / simulated, mem);
     for (const auto& kv : t)
       std::printf("  %s%-32s %9.2f ms/step  %5.1f%%\n", nested(kv.first) ? "  " : "",
                   kv.first.c_str(), 1e3 * kv.second / steps, 100 * kv.second / total);
@@ -85,8 +85,8 @@ int coupled(const picdem::core::Comm& comm, int argc, char** argv) {
     for (const char* o : {"grid/length=0.286", "grid/height=0.2", "water/column/x=[0.0, 0.066]",
                           "water/column/z=[0.0, 0.12]", "time/dt_max=0.0005"})
       without.push_back(o);
-    const auto water = picdem::core::read_case(comm, src + "/cases/dam_break/case.yaml", without,
-                                               schema);
+    const auto water =
+        picdem::core::read_case(comm, src + "/cases/dam_break/case.yaml", without, schema);
     char label[128];
     std::snprintf(label, sizeof label, "6 layers of cylinders, h = %.2f mm", 1e3 * h);
     measure(comm, label, cylinders, steps, 0.1);

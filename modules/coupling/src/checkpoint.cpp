@@ -249,43 +249,13 @@ bool stop_signal_received() {
 
 namespace {
 
-const char* const kDiagnosticNames[] = {"t",
-                                        "dt",
-                                        "step",
-                                        "fluid_volume",
-                                        "kinetic_energy",
-                                        "ppe_iterations",
-                                        "ppe_residual",
-                                        "front_x",
-                                        "particles",
-                                        "max_speed",
-                                        "solid_kinetic_energy"};
-
-std::vector<double> diagnostics_vector(const Diagnostics& g) {
-  return {g.t,
-          g.dt,
-          static_cast<double>(g.step),
-          g.fluid_volume,
-          g.kinetic_energy,
-          static_cast<double>(g.ppe_iterations),
-          g.ppe_residual,
-          g.front_x,
-          static_cast<double>(g.particles),
-          g.max_speed,
-          g.solid_kinetic_energy};
-}
-
 Diagnostics diagnostics_from(const std::vector<double>& v, const std::string& path) {
-  if (v.size() != std::size(kDiagnosticNames))
+  if (v.size() != Diagnostics::scalar_names().size())
     throw core::InputError("checkpoint file '" + path + "': attribute 'diagnostics' has " +
                            std::to_string(v.size()) + " values, expected " +
-                           std::to_string(std::size(kDiagnosticNames)));
+                           std::to_string(Diagnostics::scalar_names().size()));
   Diagnostics g;
-  g.t = v[0], g.dt = v[1], g.step = static_cast<long long>(v[2]);
-  g.fluid_volume = v[3], g.kinetic_energy = v[4];
-  g.ppe_iterations = static_cast<int>(v[5]);
-  g.ppe_residual = v[6], g.front_x = v[7], g.particles = static_cast<long long>(v[8]);
-  g.max_speed = v[9], g.solid_kinetic_energy = v[10];
+  g.set_scalars(v);
   return g;
 }
 
@@ -317,7 +287,7 @@ void write_checkpoint(const SimulationState& s, const std::string& path, const O
   out.attribute("step", s.step);
   out.attribute("ranks", static_cast<long long>(s.comm.size()));
   out.attribute("has_fluid", static_cast<long long>(s.has_fluid ? 1 : 0));
-  out.attribute("diagnostics", diagnostics_vector(s.diag));
+  out.attribute("diagnostics", s.diag.scalars());
   out.attribute("diagnostics_solids_in_box", s.diag.solids_in_box);
   if (!s.diag.levels.empty()) out.attribute("diagnostics_levels", s.diag.levels);
   out.attribute("output_next_frame", mark.next_frame);

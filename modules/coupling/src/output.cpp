@@ -38,17 +38,7 @@ Output::Output(core::Comm comm, const core::Params& params, const grid::Decompos
   if (params_.boolean("output/paraview"))
     frames_writer_ = std::make_unique<io::FrameWriter>(
         dir_, d, append, resume ? resume->last_frame_step : std::numeric_limits<long long>::max());
-  std::vector<std::string> columns{"t",
-                                   "dt",
-                                   "step",
-                                   "fluid_volume",
-                                   "kinetic_energy",
-                                   "ppe_iterations",
-                                   "ppe_residual",
-                                   "front_x",
-                                   "particles",
-                                   "max_speed",
-                                   "solid_kinetic_energy"};
+  std::vector<std::string> columns = Diagnostics::scalar_names();
   const auto probes = params.reals("output/level_probes");
   for (std::size_t n = 0; n < probes.size(); ++n)
     columns.push_back("level_" + std::to_string(n + 1));
@@ -63,17 +53,7 @@ Output::Output(core::Comm comm, const core::Params& params, const grid::Decompos
 Output::~Output() = default;
 
 void Output::record(const Diagnostics& g) {
-  std::vector<double> row{g.t,
-                          g.dt,
-                          static_cast<double>(g.step),
-                          g.fluid_volume,
-                          g.kinetic_energy,
-                          static_cast<double>(g.ppe_iterations),
-                          g.ppe_residual,
-                          g.front_x,
-                          static_cast<double>(g.particles),
-                          g.max_speed,
-                          g.solid_kinetic_energy};
+  std::vector<double> row = g.scalars();
   row.insert(row.end(), g.levels.begin(), g.levels.end());
   if (!params_.reals("output/solid_count_box").empty())
     row.push_back(static_cast<double>(g.solids_in_box));

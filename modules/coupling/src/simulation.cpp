@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 #include "picdem/core/error.hpp"
 #include "picdem/core/log.hpp"
@@ -128,6 +129,46 @@ Simulation::Simulation(core::Comm comm, core::Params params, std::string output_
 }
 
 Simulation::~Simulation() = default;
+
+const std::vector<std::string>& Diagnostics::scalar_names() {
+  static const std::vector<std::string> names{"t",
+                                              "dt",
+                                              "step",
+                                              "fluid_volume",
+                                              "kinetic_energy",
+                                              "ppe_iterations",
+                                              "ppe_residual",
+                                              "front_x",
+                                              "particles",
+                                              "max_speed",
+                                              "solid_kinetic_energy"};
+  return names;
+}
+
+std::vector<double> Diagnostics::scalars() const {
+  return {t,
+          dt,
+          static_cast<double>(step),
+          fluid_volume,
+          kinetic_energy,
+          static_cast<double>(ppe_iterations),
+          ppe_residual,
+          front_x,
+          static_cast<double>(particles),
+          max_speed,
+          solid_kinetic_energy};
+}
+
+void Diagnostics::set_scalars(const std::vector<double>& v) {
+  if (v.size() != scalar_names().size())
+    throw std::invalid_argument("Diagnostics::set_scalars: " + std::to_string(v.size()) +
+                                " values, expected " + std::to_string(scalar_names().size()));
+  t = v[0], dt = v[1], step = static_cast<long long>(v[2]);
+  fluid_volume = v[3], kinetic_energy = v[4];
+  ppe_iterations = static_cast<int>(v[5]);
+  ppe_residual = v[6], front_x = v[7], particles = static_cast<long long>(v[8]);
+  max_speed = v[9], solid_kinetic_energy = v[10];
+}
 
 const Diagnostics& Simulation::diagnostics() const {
   return s_->diag;
@@ -446,7 +487,8 @@ double Simulation::pressure_at(double x, double z) const {
 core::Vec2 Simulation::fluid_momentum() const {
   const SimulationState& s = *s_;
   double mx = 0.0, mz = 0.0;
-  for (std::size_t n = 0; n < s.particles.size(); ++n) mx += s.particles.u[n], mz += s.particles.w[n];
+  for (std::size_t n = 0; n < s.particles.size(); ++n)
+    mx += s.particles.u[n], mz += s.particles.w[n];
   return {s.comm.sum(mx * s.particle_mass), s.comm.sum(mz * s.particle_mass)};
 }
 

@@ -29,6 +29,13 @@ struct Diagnostics {
   double solid_kinetic_energy = 0.0;
   std::vector<double> levels;   ///< free-surface height at output/level_probes [m]
   long long solids_in_box = 0;  ///< solids with their centre in output/solid_count_box
+
+  /// The scalar figures from t to solid_kinetic_energy, in this order: the first columns of
+  /// timeseries.csv and the checkpoint's 'diagnostics' attribute.
+  static const std::vector<std::string>& scalar_names();
+  std::vector<double> scalars() const;
+  /// Throws std::invalid_argument when v does not hold scalar_names().size() values.
+  void set_scalars(const std::vector<double>& v);
 };
 
 class Simulation {
