@@ -216,6 +216,58 @@ void place_solids(SimulationState& s) {
   s.cut = cut_cells(s.scene, *s.decomp, s.params.real("coupling/tiny_cell_fraction"), s.apertures);
 }
 
+// A cut cell whose sliver of fluid holds no particle, with S <= 1/2 at its (covered) centre, would
+// be air: p = 0 inside the water, and a pressure jump that drives the flow through its faces at
+// many times the speed around it. Such cells are taken in groups connected through open faces
+// (two slivers side by side on a body); a group whose every other neighbour across an open face
+// is fluid (or solid) cannot be at the free surface: it is fluid.
+void wet_enclosed_cut_cells(SimulationState& s) {
+  const auto fluid = static_cast<signed char>(CellState::Fluid);
+  const auto air = static_cast<signed char>(CellState::Air);
+  const auto solid = static_cast<signed char>(CellState::Solid);
+  const auto b = s.cells.storage();
+  auto candidate = [&](int i, int k) {
+    return s.cells.in_storage(i, k) && s.cells(i, k) == air && s.cut.fluid_fraction(i, k) < 1.0;
+  };
+  grid::GridArray<signed char> seen(*s.decomp, Stagger::Cell, 0);
+  std::vector<std::pair<int, int>> group, todo;
+  for (int k = b.k0; k < b.k1; ++k)
+    for (int i = b.i0; i < b.i1; ++i) {
+      if (seen(i, k) || !candidate(i, k)) continue;
+      group.clear();
+      todo.assign(1, {i, k});
+      seen(i, k) = 1;
+      bool enclosed = true;
+      while (!todo.empty()) {
+        const auto [ci, ck] = todo.back();
+        todo.pop_back();
+        group.emplace_back(ci, ck);
+        const struct {
+          double E;
+          int i, k;
+        } faces[4] = {{s.apertures.E_x(ci, ck), ci - 1, ck},
+                      {s.apertures.E_x(ci + 1, ck), ci + 1, ck},
+                      {s.apertures.E_z(ci, ck), ci, ck - 1},
+                      {s.apertures.E_z(ci, ck + 1), ci, ck + 1}};
+        for (const auto& f : faces) {
+          if (f.E <= 0.0 || f.i < 0 || f.k < 0 || f.i >= s.spec.nx || f.k >= s.spec.nz) continue;
+          if (!s.cells.in_storage(f.i, f.k)) {
+            enclosed = false;  // the group reaches the edge of this rank's window
+            continue;
+          }
+          if (candidate(f.i, f.k)) {
+            if (!seen(f.i, f.k)) seen(f.i, f.k) = 1, todo.emplace_back(f.i, f.k);
+            continue;
+          }
+          const signed char nb = s.cells(f.i, f.k);
+          enclosed = enclosed && (nb == fluid || nb == solid);
+        }
+      }
+      if (enclosed)
+        for (const auto& [gi, gk] : group) s.cells(gi, gk) = fluid;
+    }
+}
+
 // transfer (cells): the particle occupancy S and the level set phi = 1/2 - S (free_surface.hpp),
 // S divided by the share of the tent kernel open to fluid so that solids do not read as air.
 // Cells: fluid = holds particles, or is a cut cell below the free surface (phi < 0: a cut cell
@@ -241,6 +293,7 @@ void mark_cells(SimulationState& s) {
       s.phi(i, k) = 0.5 - S;
       s.cells(i, k) = static_cast<signed char>(c);
     }
+  if (s.has_bodies) wet_enclosed_cut_cells(s);
   if (s.ghost_fluid) s.surface = fluid::surface_fractions(s.phi, s.cells, *s.decomp, s.theta_min);
 }
 
@@ -322,13 +375,14 @@ void grid_to_particles(SimulationState& s) {
   fluid::enforce_walls(s.u, s.w, s.fluid_cfg, *s.decomp);
   if (s.has_bodies) {
     const auto& spec = s.spec;
+    const double closed = kNearlyClosedFace * spec.h;
     const auto bu = s.u.storage(), bw = s.w.storage();
     for (int k = bu.k0; k < bu.k1; ++k)
       for (int i = bu.i0; i < bu.i1; ++i)
-        if (i > 0 && i < spec.nx && s.apertures.E_x(i, k) <= 0.0) s.u_old(i, k) = s.u(i, k);
+        if (i > 0 && i < spec.nx && s.apertures.E_x(i, k) <= closed) s.u_old(i, k) = s.u(i, k);
     for (int k = bw.k0; k < bw.k1; ++k)
       for (int i = bw.i0; i < bw.i1; ++i)
-        if (k > 0 && k < spec.nz && s.apertures.E_z(i, k) <= 0.0) s.w_old(i, k) = s.w(i, k);
+        if (k > 0 && k < spec.nz && s.apertures.E_z(i, k) <= closed) s.w_old(i, k) = s.w(i, k);
   }
   particles::from_grid(s.particles, s.particle_cfg, s.u_old, s.w_old, s.u, s.w, s.spec);
   if (s.dem && s.beta < 1.0)
