@@ -293,7 +293,11 @@ void mark_cells(SimulationState& s) {
       s.phi(i, k) = 0.5 - S;
       s.cells(i, k) = static_cast<signed char>(c);
     }
-  if (s.has_bodies) wet_enclosed_cut_cells(s);
+  if (s.has_bodies) {
+    wet_enclosed_cut_cells(s);
+    // A group reaching the edge of one rank's window is seen whole by its owner: owners decide.
+    s.halo->forward(s.cells);
+  }
   if (s.ghost_fluid) s.surface = fluid::surface_fractions(s.phi, s.cells, *s.decomp, s.theta_min);
 }
 
@@ -375,14 +379,13 @@ void grid_to_particles(SimulationState& s) {
   fluid::enforce_walls(s.u, s.w, s.fluid_cfg, *s.decomp);
   if (s.has_bodies) {
     const auto& spec = s.spec;
-    const double closed = kNearlyClosedFace * spec.h;
     const auto bu = s.u.storage(), bw = s.w.storage();
     for (int k = bu.k0; k < bu.k1; ++k)
       for (int i = bu.i0; i < bu.i1; ++i)
-        if (i > 0 && i < spec.nx && s.apertures.E_x(i, k) <= closed) s.u_old(i, k) = s.u(i, k);
+        if (i > 0 && i < spec.nx && s.apertures.E_x(i, k) <= 0.0) s.u_old(i, k) = s.u(i, k);
     for (int k = bw.k0; k < bw.k1; ++k)
       for (int i = bw.i0; i < bw.i1; ++i)
-        if (k > 0 && k < spec.nz && s.apertures.E_z(i, k) <= closed) s.w_old(i, k) = s.w(i, k);
+        if (k > 0 && k < spec.nz && s.apertures.E_z(i, k) <= 0.0) s.w_old(i, k) = s.w(i, k);
   }
   particles::from_grid(s.particles, s.particle_cfg, s.u_old, s.w_old, s.u, s.w, s.spec);
   if (s.dem && s.beta < 1.0)

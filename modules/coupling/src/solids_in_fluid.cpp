@@ -185,7 +185,6 @@ void rigid_face_velocities(const SolidScene& scene, const geometry::CutCells& cu
                            grid::GridArray<signed char>& u_valid,
                            grid::GridArray<signed char>& w_valid) {
   const auto& spec = d.spec();
-  const double open_limit = kNearlyClosedFace * spec.h;
   auto rigid = [&](int body, Vec2 x) {
     if (body < 0) return Vec2{};
     const auto& st = scene.states[static_cast<std::size_t>(body)];
@@ -204,7 +203,7 @@ void rigid_face_velocities(const SolidScene& scene, const geometry::CutCells& cu
   const auto bu = u.storage();
   for (int k = bu.k0; k < bu.k1; ++k)
     for (int i = bu.i0; i < bu.i1; ++i) {
-      if (i <= 0 || i >= spec.nx || k < 0 || k >= spec.nz || E.E_x(i, k) > open_limit) continue;
+      if (i <= 0 || i >= spec.nx || k < 0 || k >= spec.nz || E.E_x(i, k) > 0.0) continue;
       bool any = false;
       const int b = covering(i - 1, k, i, k, any);
       if (!any) continue;
@@ -214,7 +213,7 @@ void rigid_face_velocities(const SolidScene& scene, const geometry::CutCells& cu
   const auto bw = w.storage();
   for (int k = bw.k0; k < bw.k1; ++k)
     for (int i = bw.i0; i < bw.i1; ++i) {
-      if (k <= 0 || k >= spec.nz || i < 0 || i >= spec.nx || E.E_z(i, k) > open_limit) continue;
+      if (k <= 0 || k >= spec.nz || i < 0 || i >= spec.nx || E.E_z(i, k) > 0.0) continue;
       bool any = false;
       const int b = covering(i, k - 1, i, k, any);
       if (!any) continue;

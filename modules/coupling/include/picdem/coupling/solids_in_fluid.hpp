@@ -63,15 +63,8 @@ std::vector<core::SolidLoads> fluid_loads(const SolidScene& scene, const geometr
                                           const QuadratureOptions& quadrature,
                                           const core::Comm& comm);
 
-/// A face open over less than this share of its length counts as closed for the velocity the
-/// particles see: the projected velocity through a sliver of a face is set by the pressures of
-/// tiny cut cells and can be far larger than the flow around it (the flux E u stays small, the
-/// velocity does not), so such faces carry the covering body's velocity instead.
-inline constexpr double kNearlyClosedFace = 0.05;
-
-/// Faces closed (or open over less than kNearlyClosedFace h) by a body get its rigid velocity
-/// (obstacles: 0) and are marked valid, so that interpolation next to a solid sees the solid's
-/// motion.
+/// Faces closed by a body get its rigid velocity (obstacles: 0) and are marked valid, so that
+/// interpolation next to a solid sees the solid's motion.
 void rigid_face_velocities(const SolidScene& scene, const geometry::CutCells& cut,
                            const fluid::Apertures& E, const grid::Decomposition& d,
                            grid::FaceField& u, grid::FaceField& w,
