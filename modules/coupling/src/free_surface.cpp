@@ -106,4 +106,31 @@ double occupied_area(const grid::CellField& S, const grid::Decomposition& d,
   return comm.sum(area_cells) * spec.h * spec.h;
 }
 
+bool excess_area(const grid::CellField& S, const fluid::CellStates& cells,
+                 const geometry::CutCells* cut, double relaxation, double cap,
+                 const grid::Decomposition& d, grid::CellField& source) {
+  const auto fluid = static_cast<signed char>(grid::CellState::Fluid);
+  const auto air = static_cast<signed char>(grid::CellState::Air);
+  const auto& spec = d.spec();
+  const auto own = d.owned_cells();
+  const auto ext = spec.extent(grid::Stagger::Cell);
+  const double area = spec.h * spec.h;
+  source.fill(0.0);
+  bool any = false;
+  for (int k = own.k0; k < own.k1; ++k)
+    for (int i = own.i0; i < own.i1; ++i) {
+      if (cells(i, k) != fluid) continue;
+      bool inside = true;
+      for (int b = -1; b <= 1 && inside; ++b)
+        for (int a = -1; a <= 1 && inside; ++a)
+          inside = !ext.contains(i + a, k + b) || cells(i + a, k + b) != air;
+      if (!inside) continue;
+      const double excess = std::clamp(S(i, k) - 1.0, -cap, cap);
+      const double f = cut ? cut->fluid_fraction(i, k) : 1.0;
+      source(i, k) = relaxation * excess * f * area;
+      any = any || source(i, k) != 0.0;
+    }
+  return any;
+}
+
 }  // namespace picdem::coupling

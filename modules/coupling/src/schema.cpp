@@ -49,6 +49,14 @@ void declare_parameters(core::ParamSchema& s) {
          "smallest distance fraction of a fluid-air face to the surface (ghost fluid)")
       .greater_than(0.0)
       .at_most(1.0);
+  s.real("free_surface/density_correction", 0.0,
+         "share of the particles' excess or missing density (S - 1) moved away each step, "
+         "positions only (doc/coupling.md); 0: off")
+      .at_least(0.0)
+      .at_most(1.0);
+  s.integer("free_surface/density_correction_interval", 1,
+            "steps between density corrections (each costs a second Poisson solve)")
+      .at_least(1);
 
   s.section("coupling", "The fluid-solid coupling.");
   s.real("coupling/beta", 0.5,

@@ -92,6 +92,10 @@ Simulation::Simulation(core::Comm comm, core::Params params, std::string output_
     s.quadrature = {params.boolean("coupling/hydrostatic_quadrature"), s.fluid_cfg.rho,
                     s.fluid_cfg.g};
     s.pressure = std::make_unique<fluid::PressureSolver>(d, params);
+    s.density_relaxation = params.real("free_surface/density_correction");
+    s.density_interval = params.integer("free_surface/density_correction_interval");
+    if (s.density_relaxation > 0.0)
+      s.density_solver = std::make_unique<fluid::PressureSolver>(d, params);
     s.u = FaceField(d, Stagger::FaceX);
     s.w = FaceField(d, Stagger::FaceZ);
     s.u_old = s.u, s.w_old = s.w, s.weight_u = s.u, s.weight_w = s.w;
@@ -392,19 +396,67 @@ void grid_to_particles(SimulationState& s) {
     damp_gap_particles(s.particles, all_contacts(*s.dem, s.comm), s.spec.h, s.beta);
 }
 
+// A particle that ends inside a solid goes just outside it (none without bodies).
+std::function<void(double&, double&)> push_out_of_solids(const SimulationState& s,
+                                                         const SolidLocator& locator) {
+  if (!s.has_bodies) return {};
+  const double h = s.spec.h;
+  return [&locator, h](double& x, double& z) { push_out(locator, h, x, z); };
+}
+
+// density: particles crowded above the bulk density (S > 1), or thinned inside the water, are
+// moved (positions only: velocities untouched) by d = -grad q, with -L_E q = the excess area of
+// free_surface.hpp: the divergence of the displacement is that excess. Solids are fixed walls of
+// this Poisson equation; q = 0 on the free surface. Returns whether particles moved (the cells
+// are then marked again).
+bool correct_density(SimulationState& s) {
+  if (s.density_relaxation <= 0.0 || s.step % s.density_interval != 0) return false;
+  core::ScopedTimer timer("density correction");
+  const auto& d = *s.decomp;
+  constexpr double cap = 0.5;  // |S - 1| taken at most: half a cell's particles per step
+  grid::CellField source(d, Stagger::Cell, 0.0);
+  const bool mine = excess_area(s.occupancy, s.cells, s.has_bodies ? &s.cut : nullptr,
+                                s.density_relaxation, cap, d, source);
+  if (!s.comm.any(mine)) return false;
+  fluid::FluidConfig unit = s.fluid_cfg;
+  unit.rho = 1.0, unit.no_slip = false;
+  const fluid::SurfaceFractions* surface = s.ghost_fluid ? &s.surface : nullptr;
+  FaceField dx(d, Stagger::FaceX, 0.0), dz(d, Stagger::FaceZ, 0.0);
+  grid::CellField q(d, Stagger::Cell, 0.0);
+  s.density_solver->solve(s.cells, s.apertures, dx, dz, {}, 1.0, unit, q, surface, &source);
+  fluid::project(dx, dz, q, s.cells, s.apertures, 1.0, unit, surface);
+  // A displacement of more than half a cell would skip the stencil: capped.
+  const double most = 0.5 * s.spec.h;
+  for (auto* f : {&dx, &dz}) {
+    const auto b = f->storage();
+    for (int k = b.k0; k < b.k1; ++k)
+      for (int i = b.i0; i < b.i1; ++i) (*f)(i, k) = std::clamp((*f)(i, k), -most, most);
+  }
+  // Closed faces (walls, bodies) hold 0 and count as known; the rest is extended.
+  grid::GridArray<signed char> du(d, Stagger::FaceX, 0), dw(d, Stagger::FaceZ, 0);
+  fluid::fluid_faces(s.cells, s.apertures, du, dw);
+  for (auto [valid, E] : {std::pair{&du, &s.apertures.E_x}, std::pair{&dw, &s.apertures.E_z}}) {
+    const auto b = valid->storage();
+    for (int k = b.k0; k < b.k1; ++k)
+      for (int i = b.i0; i < b.i1; ++i)
+        if ((*E)(i, k) <= 0.0) (*valid)(i, k) = 1;
+  }
+  s.halo->forward(dx), s.halo->forward(dz);
+  fluid::enforce_walls(dx, dz, unit, d);
+  fluid::extend_velocity(dx, dz, du, dw, d.halo(), *s.halo);
+  const SolidLocator locator(s.scene);
+  particles::advect(s.particles, s.particle_cfg, dx, dz, s.spec, 1.0,
+                    push_out_of_solids(s, locator));
+  particles::migrate(s.particles, d);
+  return true;
+}
+
 // advect: move through the divergence-free field, out of solids, reseed, migrate.
 void advect_particles(SimulationState& s, double dt) {
   core::ScopedTimer timer("advect");
   const SolidLocator locator(s.scene);
   const bool solids = s.has_bodies;
-  const double h = s.spec.h;
-  std::function<void(double&, double&)> out_of_solids;
-  if (solids)
-    out_of_solids = [&](double& x, double& z) {
-      Vec2 q, n;
-      for (int pass = 0; pass < 3 && locator.inside({x, z}, &q, &n); ++pass)
-        x = q.x + 0.1 * h * n.x, z = q.z + 0.1 * h * n.z;
-    };
+  const auto out_of_solids = push_out_of_solids(s, locator);
   // A blown-up advection is found on one rank: stop every rank with the message, never just one.
   std::string failure;
   try {
@@ -517,6 +569,8 @@ void Simulation::step() {
   if (s.has_fluid) {
     place_solids(s);          // geometry
     mark_cells(s);            // transfer (cells)
+    if (correct_density(s))   // density (positions only)
+      mark_cells(s);
     particles_to_grid(s);     // transfer
     add_forces(s, dt);        // forces
     predict_contacts(s, dt);  // contact

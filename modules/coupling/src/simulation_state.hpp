@@ -46,6 +46,9 @@ struct SimulationState {
   fluid::SurfaceFractions surface;
   fluid::Apertures apertures;
   double particle_mass = 0.0;  // per unit depth
+  double density_relaxation = 0.0;                       // free_surface/density_correction
+  long long density_interval = 1;                        // .../density_correction_interval
+  std::unique_ptr<fluid::PressureSolver> density_solver;  // its Poisson equation
 
   // solids
   std::vector<geometry::Obstacle> obstacles;

@@ -345,13 +345,11 @@ bool SolidLocator::inside(Vec2 p, Vec2* surface, Vec2* normal) const {
   return false;
 }
 
-void push_out(particles::ParticleSet& ps, const SolidLocator& locator, double h) {
-  for (std::size_t n = 0; n < ps.x.size(); ++n) {
-    Vec2 p{ps.x[n], ps.z[n]}, q, nrm;
-    // A few passes: the nearest surface of one polygon of an obstacle may lie in another.
-    for (int pass = 0; pass < 3 && locator.inside(p, &q, &nrm); ++pass) p = q + 0.1 * h * nrm;
-    ps.x[n] = p.x, ps.z[n] = p.z;
-  }
+void push_out(const SolidLocator& locator, double h, double& x, double& z) {
+  Vec2 p{x, z}, q, nrm;
+  // A few passes: the nearest surface of one polygon of an obstacle may lie in another.
+  for (int pass = 0; pass < 3 && locator.inside(p, &q, &nrm); ++pass) p = q + 0.1 * h * nrm;
+  x = p.x, z = p.z;
 }
 
 std::vector<dem::Contact> all_contacts(const dem::DemSolver& dem, const core::Comm& comm) {

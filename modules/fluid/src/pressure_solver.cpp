@@ -79,7 +79,8 @@ AssembledSystem PressureSolver::assemble(const CellStates& cells, const Aperture
                                          const grid::FaceField& u, const grid::FaceField& w,
                                          const std::vector<SolidCoupling>& couplings, double dt,
                                          const FluidConfig& cfg,
-                                         const SurfaceFractions* surface) const {
+                                         const SurfaceFractions* surface,
+                                         const grid::CellField* source) const {
   core::ScopedTimer timer("fluid: pressure assembly");
   const grid::Decomposition& d = impl_->d;
   const grid::GridSpec& g = d.spec();
@@ -126,7 +127,7 @@ AssembledSystem PressureSolver::assemble(const CellStates& cells, const Aperture
       }
       row.emplace_back(g.cell_gid(i, k), diag);
       // b = -D(u~)  (eq. 5 with the sign of -L_E)
-      sys.rhs[static_cast<std::size_t>(r)] = -D(i, k);
+      sys.rhs[static_cast<std::size_t>(r)] = -D(i, k) + (source ? (*source)(i, k) : 0.0);
     }
 
   const auto joined = detail::gather_couplings(couplings, d.comm());
@@ -494,9 +495,9 @@ SolveStats PressureSolver::solve(const CellStates& cells, const Apertures& E,
                                  const grid::FaceField& u, const grid::FaceField& w,
                                  const std::vector<SolidCoupling>& couplings, double dt,
                                  const FluidConfig& cfg, grid::CellField& p,
-                                 const SurfaceFractions* surface) {
+                                 const SurfaceFractions* surface, const grid::CellField* source) {
   const auto t0 = std::chrono::steady_clock::now();
-  const AssembledSystem sys = assemble(cells, E, u, w, couplings, dt, cfg, surface);
+  const AssembledSystem sys = assemble(cells, E, u, w, couplings, dt, cfg, surface, source);
   const double assembly = seconds_since(t0);
   const grid::GridSpec& g = impl_->d.spec();
   std::vector<double> x(sys.rows.size());

@@ -70,6 +70,14 @@ TEST(PressureMatrix, ThreeByThreeByHand) {
   // b = -D: D(1,0) = 0.1*0.2 + 0.1*0.3, D(2,0) = -0.1*0.3, D(1,1) = -0.1*0.2.
   const std::vector<double> b = {0.0, -0.05, 0.03, 0.0, 0.02};
   for (std::size_t r = 0; r < 5; ++r) EXPECT_NEAR(sys.rhs[r], b[r], 1e-16) << r;
+  // A source adds its value on fluid rows only (the air cell (2,1) holds 7, ignored); the matrix
+  // is unchanged.
+  CellField source(d, Stagger::Cell, 0.0);
+  source(1, 0) = 0.25, source(0, 1) = -0.5, source(2, 1) = 7.0;
+  const auto with = solver.assemble(cells, E, u, w, {}, 0.01, cfg, nullptr, &source);
+  const std::vector<double> b2 = {0.0, 0.2, 0.03, -0.5, 0.02};
+  for (std::size_t r = 0; r < 5; ++r) EXPECT_NEAR(with.rhs[r], b2[r], 1e-16) << r;
+  expect_rows(with, expected, 1e-20);
 }
 
 // 8x4 cells, h = 0.1, fluid in rows 0..2, air in row 3. One solid (m = 2, I = 0.01,

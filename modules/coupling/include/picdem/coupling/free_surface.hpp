@@ -16,6 +16,7 @@
 // divided by the share of the tent open to fluid (open_share_correction), so that water against a
 // solid reads S = 1 and a body does not read as air.
 #include "picdem/core/comm.hpp"
+#include "picdem/fluid/fluid.hpp"
 #include "picdem/geometry/cut_cells.hpp"
 #include "picdem/grid/field.hpp"
 #include "picdem/particles/particle_set.hpp"
@@ -36,5 +37,14 @@ void open_share_correction(grid::CellField& S, const geometry::CutCells& cut,
 /// weighted by its fluid fraction: the water's area, without the solids in it.
 double occupied_area(const grid::CellField& S, const grid::Decomposition& d,
                      const core::Comm& comm, const geometry::CutCells* cut = nullptr);
+
+/// The particles' excess area, the source of the density correction (doc/coupling.md): on every
+/// owned fluid cell, relaxation (S - 1) f h^2 with f the cell's fluid fraction (1 without `cut`),
+/// where S > 1, and where S < 1 in cells whose eight neighbours hold no air (inside the water:
+/// near the surface S < 1 is the surface, not a deficit); |S - 1| is capped at `cap`. 0 on every
+/// other cell. S and cells need a current halo. Returns whether any owned cell is nonzero.
+bool excess_area(const grid::CellField& S, const fluid::CellStates& cells,
+                 const geometry::CutCells* cut, double relaxation, double cap,
+                 const grid::Decomposition& d, grid::CellField& source);
 
 }  // namespace picdem::coupling

@@ -88,8 +88,9 @@ class SolidLocator {
   std::vector<std::vector<core::Vec2>> obstacle_polys_;
 };
 
-/// Moves particles found inside a body to just outside its surface (a tenth of a cell).
-void push_out(particles::ParticleSet& ps, const SolidLocator& locator, double h);
+/// Moves a point found inside a body to a tenth of a cell h outside the nearest point of its
+/// surface; a point outside every body stays.
+void push_out(const SolidLocator& locator, double h, double& x, double& z);
 
 /// Eq. 20: particles in the band of an active contact (4h along the tangent, centred at the
 /// contact point, h either side of it along the normal) have their velocity scaled by C, linear

@@ -62,17 +62,20 @@ class PressureSolver {
   /// `cells` must have a current halo. Throws core::SolverError naming the residual reached
   /// when the relative true residual stays above solver/tolerance. With `surface`, an air
   /// neighbour across a face of fraction theta adds E dt/(rho h theta) to the diagonal (p = 0
-  /// at the sub-cell surface); pass the same surface to project().
+  /// at the sub-cell surface); pass the same surface to project(). With `source`, its value on
+  /// each owned fluid cell is added to that row's right-hand side (units of D: m^2/s).
   SolveStats solve(const CellStates& cells, const Apertures& E, const grid::FaceField& u,
                    const grid::FaceField& w, const std::vector<SolidCoupling>& couplings, double dt,
                    const FluidConfig& cfg, grid::CellField& p,
-                   const SurfaceFractions* surface = nullptr);
+                   const SurfaceFractions* surface = nullptr,
+                   const grid::CellField* source = nullptr);
 
   /// The same assembly as solve(), returned as plain arrays instead of solved.
   AssembledSystem assemble(const CellStates& cells, const Apertures& E, const grid::FaceField& u,
                            const grid::FaceField& w, const std::vector<SolidCoupling>& couplings,
                            double dt, const FluidConfig& cfg,
-                           const SurfaceFractions* surface = nullptr) const;
+                           const SurfaceFractions* surface = nullptr,
+                           const grid::CellField* source = nullptr) const;
 
  private:
   struct Impl;
