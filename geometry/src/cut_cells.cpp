@@ -158,6 +158,46 @@ void assign_cell(Sub& s) {
 }
 
 // 1/2 (x dz - z dx) integrated over the piece, relative to the centre of its cell.
+// The first moments of WettedPiece about the centre of cell (i, k), in world units, for a
+// segment (p0 -> p1) or an arc (centre c, radius rho, from phi0 over dphi), all in window units
+// (world = origin + h u); com is the body's centre of mass (window units), null for obstacles.
+void set_moments(WettedPiece& p, const Sub& s, int i, int k, double h, const Vec2* com) {
+  const Vec2 uc{i + 0.5, k + 0.5};
+  const Vec2 d = s.p1 - s.p0, n_dl{d.z, -d.x};  // window units
+  Vec2 mx, mz;                                    // int (u - uc)_x n dl_w, int (u - uc)_z n dl_w
+  if (s.arc) {
+    // u - uc = (c - uc) + rho n(phi), dl = rho dphi: int n n^T dphi in closed form
+    const double a = s.phi0, b = s.phi0 + s.dphi;
+    const double cc = 0.5 * s.dphi + 0.25 * (std::sin(2 * b) - std::sin(2 * a));
+    const double ss = 0.5 * s.dphi - 0.25 * (std::sin(2 * b) - std::sin(2 * a));
+    const double cs = 0.5 * (std::sin(b) * std::sin(b) - std::sin(a) * std::sin(a));
+    const double r2 = s.rho * s.rho;
+    const Vec2 e = s.c - uc;
+    mx = Vec2{e.x * n_dl.x + r2 * cc, e.x * n_dl.z + r2 * cs};
+    mz = Vec2{e.z * n_dl.x + r2 * cs, e.z * n_dl.z + r2 * ss};
+  } else {
+    const Vec2 m = 0.5 * (s.p0 + s.p1) - uc;  // n is constant: the midpoint rule is exact
+    mx = m.x * n_dl;
+    mz = m.z * n_dl;
+  }
+  p.dx_n_dl = h * h * mx;
+  p.dz_n_dl = h * h * mz;
+  p.d_r_cross_n_dl = Vec2{};
+  if (!com) return;
+  if (s.arc) {
+    // r x n = (c - com) x n on an arc about c: linear in n
+    const Vec2 l = s.c - *com;
+    p.d_r_cross_n_dl = h * h * h * Vec2{l.x * mx.z - l.z * mx.x, l.x * mz.z - l.z * mz.x};
+  } else {
+    // (u - uc) and (u - com) x n_dl are linear along the segment: Simpson is exact
+    auto t = [&](const Vec2& u) { return (u.x - com->x) * n_dl.z - (u.z - com->z) * n_dl.x; };
+    const Vec2 a = s.p0 - uc, b = s.p1 - uc, m = 0.5 * (a + b);
+    const Vec2 mid = 0.5 * (s.p0 + s.p1);
+    const Vec2 sum = t(s.p0) * a + 4.0 * t(mid) * m + t(s.p1) * b;
+    p.d_r_cross_n_dl = (h * h * h / 6.0) * sum;
+  }
+}
+
 double area_term(const Sub& s) {
   const Vec2 c{s.i + 0.5, s.k + 0.5};
   double a = 0.5 * core::cross(s.p0 - c, s.p1 - c);
@@ -592,6 +632,7 @@ void add_item(const Item& it, const std::vector<Item>& items, const std::vector<
       const Vec2 lever = s.arc ? s.c - it.com : 0.5 * (s.p0 + s.p1) - it.com;
       p.r_cross_n_dl = -w.h * w.h * core::dot(d, lever);
     }
+    set_moments(p, s, s.i, s.k, w.h, it.tag >= 0 ? &it.com : nullptr);
     p.length = w.h * (s.arc ? s.rho * s.dphi : core::norm(d));
     if (!chain.empty() && chain.back().i == p.i && chain.back().k == p.k &&
         chain.back().p1 == p.p0) {
@@ -599,6 +640,9 @@ void add_item(const Item& it, const std::vector<Item>& items, const std::vector<
       q.p1 = p.p1;
       q.n_dl += p.n_dl;
       q.r_cross_n_dl += p.r_cross_n_dl;
+      q.dx_n_dl += p.dx_n_dl;
+      q.dz_n_dl += p.dz_n_dl;
+      q.d_r_cross_n_dl += p.d_r_cross_n_dl;
       q.length += p.length;
     } else {
       chain.push_back(p);
@@ -611,6 +655,9 @@ void add_item(const Item& it, const std::vector<Item>& items, const std::vector<
     q.p0 = chain.back().p0;
     q.n_dl += chain.back().n_dl;
     q.r_cross_n_dl += chain.back().r_cross_n_dl;
+    q.dx_n_dl += chain.back().dx_n_dl;
+    q.dz_n_dl += chain.back().dz_n_dl;
+    q.d_r_cross_n_dl += chain.back().d_r_cross_n_dl;
     q.length += chain.back().length;
     chain.pop_back();
   }
@@ -933,6 +980,9 @@ CutCells build_cut_cells(const GridWindow& window, const std::vector<SolidPlacem
           if (tag >= 0 && owner) {
             p.r_cross_n_dl = -window.h * window.h * core::dot(d, 0.5 * (p0 + p1) - owner->com);
           }
+          Sub segment;
+          segment.p0 = p0, segment.p1 = p1;
+          set_moments(p, segment, f.ni, f.nk, window.h, tag >= 0 && owner ? &owner->com : nullptr);
           p.length = window.h * core::norm(d);
           p.closes_tiny_cell = true;
           closing.push_back(p);

@@ -89,14 +89,15 @@ bool fluid_cell(const fluid::CellStates& cells, int i, int k) {
   return cells(i, k) == static_cast<signed char>(CellState::Fluid);
 }
 
-// Hydrostatic quadrature load of one piece: -rho g.(m - x_c) a_piece.
-void add_quadrature_load(const geometry::WettedPiece& piece, const grid::GridSpec& spec,
-                         const QuadratureOptions& q, double* r) {
+// Hydrostatic quadrature load of one piece: -int rho g.(x - x_c) (n, r x n) dl, exact along the
+// piece (arcs included) from its first moments about x_c.
+void add_quadrature_load(const geometry::WettedPiece& piece, const QuadratureOptions& q,
+                         double* r) {
   if (!q.hydrostatic) return;
-  const Vec2 m = 0.5 * (piece.p0 + piece.p1);
-  const Vec2 xc = spec.position(Stagger::Cell, piece.i, piece.k);
-  const double dp = q.rho * core::dot(q.g, m - xc);
-  r[0] -= dp * piece.n_dl.x, r[1] -= dp * piece.n_dl.z, r[2] -= dp * piece.r_cross_n_dl;
+  const Vec2 rg = q.rho * q.g;
+  r[0] -= rg.x * piece.dx_n_dl.x + rg.z * piece.dz_n_dl.x;
+  r[1] -= rg.x * piece.dx_n_dl.z + rg.z * piece.dz_n_dl.z;
+  r[2] -= rg.x * piece.d_r_cross_n_dl.x + rg.z * piece.d_r_cross_n_dl.z;
 }
 
 }  // namespace
@@ -118,7 +119,7 @@ std::vector<fluid::SolidCoupling> solid_couplings(
   }
   for (const auto& piece : cut.pieces)
     if (piece.body >= 0 && own.contains(piece.i, piece.k) && fluid_cell(cells, piece.i, piece.k))
-      add_quadrature_load(piece, spec, quadrature,
+      add_quadrature_load(piece, quadrature,
                           coll.row(scene.states[static_cast<std::size_t>(piece.body)].id));
   comm.sum_in_place(coll.v);
 
@@ -160,7 +161,6 @@ std::vector<core::SolidLoads> fluid_loads(const SolidScene& scene, const geometr
   const auto n = solid_count(scene, comm);
   IdTable load(std::max<std::int64_t>(n, 1), 3);
   const auto own = d.owned_cells();
-  const auto& spec = d.spec();
   for (const auto& piece : cut.pieces) {
     if (piece.body < 0 || !own.contains(piece.i, piece.k) || !fluid_cell(cells, piece.i, piece.k))
       continue;
@@ -168,7 +168,7 @@ std::vector<core::SolidLoads> fluid_loads(const SolidScene& scene, const geometr
     double* r = load.row(scene.states[static_cast<std::size_t>(piece.body)].id);
     // J p = - sum_c a_{s,c} p_c : force -int p n dl, torque -int p (r x n) dl
     r[0] -= piece.n_dl.x * pc, r[1] -= piece.n_dl.z * pc, r[2] -= piece.r_cross_n_dl * pc;
-    add_quadrature_load(piece, spec, quadrature, r);
+    add_quadrature_load(piece, quadrature, r);
   }
   comm.sum_in_place(load.v);
   std::vector<core::SolidLoads> out;

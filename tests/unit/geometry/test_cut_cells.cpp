@@ -53,6 +53,9 @@ struct Totals {
   double length = 0, area = 0;
   Vec2 n_dl;
   double r_cross_n = 0;
+  // int x n dl, int z n dl, (int x (r x n) dl, int z (r x n) dl) over the whole boundary, from the
+  // pieces' first moments about their cells' centres
+  Vec2 x_n, z_n, x_r_cross_n;
 };
 Totals totals(const CutCells& cc) {
   Totals t;
@@ -60,6 +63,10 @@ Totals totals(const CutCells& cc) {
     t.length += p.length;
     t.n_dl += p.n_dl;
     t.r_cross_n += p.r_cross_n_dl;
+    const Vec2 xc = cc.window.origin + cc.window.h * Vec2{p.i + 0.5, p.k + 0.5};
+    t.x_n += p.dx_n_dl + xc.x * p.n_dl;
+    t.z_n += p.dz_n_dl + xc.z * p.n_dl;
+    t.x_r_cross_n += p.d_r_cross_n_dl + p.r_cross_n_dl * xc;
   }
   const auto& b = cc.window.cells;
   for (int k = b.k0; k < b.k1; ++k) {
@@ -168,6 +175,15 @@ void expect_invariants(const CutCells& cc, const SolidPlacement& s, double perim
   EXPECT_NEAR(t.n_dl.x, 0.0, tol * L);
   EXPECT_NEAR(t.n_dl.z, 0.0, tol * L);
   EXPECT_NEAR(t.r_cross_n, 0.0, tol * A);
+  // Divergence theorem: int x_a n_b dl = delta_ab A, and int x_a (r x n) dl = (-int r_z dA,
+  // int r_x dA) = 0 about the centre of mass. These make the hydrostatic quadrature exact.
+  const double scale = A * (1.0 + picdem::core::norm(s.pose.x) / L);
+  EXPECT_NEAR(t.x_n.x, A, tol * scale);
+  EXPECT_NEAR(t.x_n.z, 0.0, tol * scale);
+  EXPECT_NEAR(t.z_n.x, 0.0, tol * scale);
+  EXPECT_NEAR(t.z_n.z, A, tol * scale);
+  EXPECT_NEAR(t.x_r_cross_n.x, 0.0, tol * scale * L);
+  EXPECT_NEAR(t.x_r_cross_n.z, 0.0, tol * scale * L);
 }
 
 double polygon_perimeter(const Polygon& p) {

@@ -48,6 +48,11 @@ struct WettedPiece {
   double r_cross_n_dl =
       0;  ///< integral of (r x n) dl, r from the body's centre of mass; 0 for obstacles
   double length = 0;
+  /// First moments about the centre x_c of cell (i, k), exact on arcs and segments, for loads of
+  /// a pressure varying linearly along the piece (the hydrostatic quadrature):
+  /// dx_n_dl = int (x - x_c) n dl, dz_n_dl = int (z - z_c) n dl, and
+  /// d_r_cross_n_dl = (int (x - x_c) (r x n) dl, int (z - z_c) (r x n) dl); 0 for obstacles.
+  Vec2 dx_n_dl, dz_n_dl, d_r_cross_n_dl;
   bool closes_tiny_cell = false;  ///< a face of a dropped tiny cell (CutCellOptions)
 };
 
