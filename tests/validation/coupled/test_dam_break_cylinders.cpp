@@ -1,7 +1,7 @@
 // Dam break with 6 and 12 layers of cylinders (paper section 3.2) at 6.7 cells per cylinder
 // diameter (h = 1.5 mm, to keep CI short; the paper's 20 in doc/validation.md), to 0.6 s:
 // - stable (a blown-up run throws), no body's real boundary crosses another's or a wall's;
-// - fluid volume within 2% (open: it is not met at this resolution, doc/validation.md);
+// - fluid volume within 2% (the cases' density correction, doc/coupling.md);
 // - the first arrival of a cylinder at the right wall, with gap damping (beta 0.5) and without
 //   (beta 1.0): without, the cylinders arrive earlier;
 // - the 12-layer collapse is less violent than the 6-layer one, measured by the peak kinetic energy
@@ -83,7 +83,7 @@ TEST(DamBreakCylinders, StableAndTheFindingsOfThePaper) {
   EXPECT_LT(r.twelve.peak_fluid_ke, r.six.peak_fluid_ke);
 }
 
-// Open (doc/validation.md): the fluid volume drifts 12% (6 layers, beta 1.0) and 23% (12 layers).
+// The water's area inside its free surface (less the cylinders), against the first step's.
 TEST(DamBreakCylinders, FluidVolumeWithinTwoPercent) {
   const Runs& r = runs();
   EXPECT_LE(r.six.worst_volume, 0.02);
