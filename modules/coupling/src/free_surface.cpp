@@ -120,12 +120,14 @@ bool excess_area(const grid::CellField& S, const fluid::CellStates& cells,
   for (int k = own.k0; k < own.k1; ++k)
     for (int i = own.i0; i < own.i1; ++i) {
       if (cells(i, k) != fluid) continue;
-      bool inside = true;
-      for (int b = -1; b <= 1 && inside; ++b)
-        for (int a = -1; a <= 1 && inside; ++a)
-          inside = !ext.contains(i + a, k + b) || cells(i + a, k + b) != air;
-      if (!inside) continue;
       const double excess = std::clamp(S(i, k) - 1.0, -cap, cap);
+      if (excess < 0.0) {
+        bool inside = true;
+        for (int b = -1; b <= 1 && inside; ++b)
+          for (int a = -1; a <= 1 && inside; ++a)
+            inside = !ext.contains(i + a, k + b) || cells(i + a, k + b) != air;
+        if (!inside) continue;
+      }
       const double f = cut ? cut->fluid_fraction(i, k) : 1.0;
       source(i, k) = relaxation * excess * f * area;
       any = any || source(i, k) != 0.0;

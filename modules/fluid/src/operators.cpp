@@ -41,6 +41,12 @@ void declare_parameters(core::ParamSchema& schema) {
       .positive()
       .less_than(1.0);
   schema.integer("solver/max_iterations", 500, "CG iterations allowed per solve").at_least(1);
+  schema.real("solver/solid_drop_tol", 0.02,
+              "MueLu's \"aggregation: drop tol\" for systems with solids (their dense blocks "
+              "aggregated as strong connections double the iterations); one set in solver/MueLu "
+              "takes precedence")
+      .at_least(0.0)
+      .less_than(1.0);
   schema.boolean("solver/rebalance", true,
                  "split the pressure unknowns evenly over the ranks for the solve (the grid "
                  "blocks hold unequal numbers of fluid cells)");

@@ -48,6 +48,7 @@ struct SolverSettings {
   double tolerance = 1e-8;
   int max_iterations = 500;
   bool rebalance = true;
+  double solid_drop_tol = 0.02;
   Teuchos::ParameterList belos, muelu;
 };
 
@@ -56,6 +57,7 @@ SolverSettings settings_from(const core::Params& params) {
   s.tolerance = params.real("solver/tolerance");
   s.max_iterations = static_cast<int>(params.integer("solver/max_iterations"));
   s.rebalance = params.boolean("solver/rebalance");
+  s.solid_drop_tol = params.real("solver/solid_drop_tol");
   s.belos = params.teuchos("solver/Belos");
   s.muelu = params.teuchos("solver/MueLu");
   return s;
@@ -131,6 +133,7 @@ AssembledSystem PressureSolver::assemble(const CellStates& cells, const Aperture
     }
 
   const auto joined = detail::gather_couplings(couplings, d.comm());
+  sys.with_solids = !joined.empty();
   if (!joined.empty()) {
     // Which coupling cells are fluid: each owner answers for its cells, summed over ranks.
     std::vector<double> fluid_flag;
@@ -417,6 +420,11 @@ SolveStats run_solver(const grid::Decomposition& d, const SolverSettings& settin
   }
 
   Teuchos::ParameterList muelu = settings.muelu;
+  // The solids' dense blocks join every cut cell of a body to every other: aggregated as strong
+  // connections they double the iterations (doc/performance.md). Weak ones are left out of the
+  // aggregation graph unless the case sets its own drop tolerance.
+  if (sys.with_solids && !muelu.isParameter("aggregation: drop tol"))
+    muelu.set("aggregation: drop tol", settings.solid_drop_tol);
   // A system no larger than the coarse size is its own coarsest level, which no repartitioning
   // gathers onto one rank: there the distributed direct coarse solve is wrong (TOOLCHAIN.md),
   // so such small systems on several ranks are smoothed by symmetric Gauss-Seidel instead.

@@ -47,6 +47,7 @@ struct AssembledSystem {
   std::vector<long long> rows;
   std::vector<std::vector<std::pair<long long, double>>> entries;
   std::vector<double> rhs;
+  bool with_solids = false;  ///< solid couplings entered (MueLu then drops weak connections)
 };
 
 class PressureSolver {
