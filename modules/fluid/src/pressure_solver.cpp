@@ -421,9 +421,10 @@ SolveStats run_solver(const grid::Decomposition& d, const SolverSettings& settin
 
   Teuchos::ParameterList muelu = settings.muelu;
   // The solids' dense blocks join every cut cell of a body to every other: aggregated as strong
-  // connections they double the iterations (doc/performance.md). Weak ones are left out of the
-  // aggregation graph unless the case sets its own drop tolerance.
-  if (sys.with_solids && !muelu.isParameter("aggregation: drop tol"))
+  // connections they double the iterations (doc/performance.md). solver/solid_drop_tol > 0 leaves
+  // weak ones out of the aggregation graph unless the case sets its own drop tolerance.
+  if (sys.with_solids && settings.solid_drop_tol > 0.0 &&
+      !muelu.isParameter("aggregation: drop tol"))
     muelu.set("aggregation: drop tol", settings.solid_drop_tol);
   // A system no larger than the coarse size is its own coarsest level, which no repartitioning
   // gathers onto one rank: there the distributed direct coarse solve is wrong (TOOLCHAIN.md),
