@@ -157,7 +157,6 @@ void assign_cell(Sub& s) {
   s.k = arc_or_segment_index(s, m.z, d.x < 0, s.c.z, s.p0.z, d.z == 0.0, kHorizontal);
 }
 
-// 1/2 (x dz - z dx) integrated over the piece, relative to the centre of its cell.
 // The first moments of WettedPiece about the centre of cell (i, k), in world units, for a
 // segment (p0 -> p1) or an arc (centre c, radius rho, from phi0 over dphi), all in window units
 // (world = origin + h u); com is the body's centre of mass (window units), null for obstacles.
@@ -198,6 +197,7 @@ void set_moments(WettedPiece& p, const Sub& s, int i, int k, double h, const Vec
   }
 }
 
+// 1/2 (x dz - z dx) integrated over the piece, relative to the centre of its cell.
 double area_term(const Sub& s) {
   const Vec2 c{s.i + 0.5, s.k + 0.5};
   double a = 0.5 * core::cross(s.p0 - c, s.p1 - c);

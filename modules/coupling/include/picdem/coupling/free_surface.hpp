@@ -41,7 +41,8 @@ double occupied_area(const grid::CellField& S, const grid::Decomposition& d,
 /// The particles' excess area, the source of the density correction (doc/coupling.md): on every
 /// owned fluid cell, relaxation (S - 1) f h^2 with f the cell's fluid fraction (1 without `cut`),
 /// where S > 1, and where S < 1 only in cells whose eight neighbours hold no air (at the surface
-/// S < 1 is the surface, not a deficit); |S - 1| is capped at `cap`. 0 on every other cell. S and cells need a current halo. Returns whether any owned cell is nonzero.
+/// S < 1 is the surface, not a deficit); |S - 1| is capped at `cap`. 0 on every other cell.
+/// S and cells need a current halo. Returns whether any owned cell is nonzero.
 bool excess_area(const grid::CellField& S, const fluid::CellStates& cells,
                  const geometry::CutCells* cut, double relaxation, double cap,
                  const grid::Decomposition& d, grid::CellField& source);
