@@ -41,12 +41,18 @@ void declare_parameters(core::ParamSchema& schema) {
       .positive()
       .less_than(1.0);
   schema.integer("solver/max_iterations", 500, "CG iterations allowed per solve").at_least(1);
-  schema.real("solver/solid_drop_tol", 0.0,
-              "MueLu's \"aggregation: drop tol\" for systems with solids (0.02 halved the "
-              "iterations of the cylinder dam break but broke CG down on a small 2-rank system: "
-              "doc/performance.md); one set in solver/MueLu takes precedence")
+  schema.real("solver/solid_drop_tol", 0.02,
+              "MueLu's \"aggregation: drop tol\" for systems with solids: the weak entries of "
+              "the solids' dense blocks stay out of the aggregation graph, which halves the "
+              "iterations (doc/performance.md); 0 keeps them; one set in solver/MueLu takes "
+              "precedence")
       .at_least(0.0)
       .less_than(1.0);
+  schema.integer("solver/solid_eigen_iterations", 30,
+                 "power-iteration steps of the Chebyshev smoother's largest-eigenvalue estimate "
+                 "for systems with solids (the solids' blocks add eigenvalues that 10 steps can "
+                 "miss: doc/performance.md); one set in solver/MueLu takes precedence")
+      .at_least(1);
   schema.boolean("solver/rebalance", true,
                  "split the pressure unknowns evenly over the ranks for the solve (the grid "
                  "blocks hold unequal numbers of fluid cells)");

@@ -49,6 +49,7 @@ struct SolverSettings {
   int max_iterations = 500;
   bool rebalance = true;
   double solid_drop_tol = 0.02;
+  int solid_eigen_iterations = 30;
   Teuchos::ParameterList belos, muelu;
 };
 
@@ -58,6 +59,7 @@ SolverSettings settings_from(const core::Params& params) {
   s.max_iterations = static_cast<int>(params.integer("solver/max_iterations"));
   s.rebalance = params.boolean("solver/rebalance");
   s.solid_drop_tol = params.real("solver/solid_drop_tol");
+  s.solid_eigen_iterations = static_cast<int>(params.integer("solver/solid_eigen_iterations"));
   s.belos = params.teuchos("solver/Belos");
   s.muelu = params.teuchos("solver/MueLu");
   return s;
@@ -426,6 +428,14 @@ SolveStats run_solver(const grid::Decomposition& d, const SolverSettings& settin
   if (sys.with_solids && settings.solid_drop_tol > 0.0 &&
       !muelu.isParameter("aggregation: drop tol"))
     muelu.set("aggregation: drop tol", settings.solid_drop_tol);
+  // The same blocks give D^-1 A a few large eigenvalues whose eigenvectors live on the cut cells
+  // of one body. Chebyshev's power iteration (10 steps by default) can miss them; a smoother
+  // built on too small a largest eigenvalue amplifies those modes and the V-cycle is no longer
+  // positive definite (CG stops with alpha <= 0; doc/performance.md).
+  if (sys.with_solids && muelu.get<std::string>("smoother: type", "RELAXATION") == "CHEBYSHEV" &&
+      !muelu.sublist("smoother: params").isParameter("chebyshev: eigenvalue max iterations"))
+    muelu.sublist("smoother: params")
+        .set("chebyshev: eigenvalue max iterations", settings.solid_eigen_iterations);
   // A system no larger than the coarse size is its own coarsest level, which no repartitioning
   // gathers onto one rank: there the distributed direct coarse solve is wrong (TOOLCHAIN.md),
   // so such small systems on several ranks are smoothed by symmetric Gauss-Seidel instead.
