@@ -47,7 +47,7 @@ struct AssembledSystem {
   std::vector<long long> rows;
   std::vector<std::vector<std::pair<long long, double>>> entries;
   std::vector<double> rhs;
-  bool with_solids = false;  ///< solid couplings entered (solver/solid_drop_tol and solid_eigen_iterations apply)
+  bool with_solids = false;  ///< solid couplings entered (the solver/solid_* settings apply)
 };
 
 class PressureSolver {
