@@ -3,7 +3,7 @@
 
 Usage: python3 doc/dem_dry_collapse_plot.py [folder with dem_dry_collapse_<model>.csv] [out.png]
 The CSV files are written by the validation test test_dem_dry_collapse (in its build folder);
-copies are kept in doc/. The experiment is ../shared/validation/zhang2009_dry_collapse_6layers.csv.
+copies are kept in doc/. The experiment is tests/validation/data/zhang2009_dry_collapse_6layers.csv.
 """
 import csv
 import os
@@ -17,7 +17,7 @@ import matplotlib.pyplot as plt
 here = os.path.dirname(os.path.abspath(__file__))
 folder = sys.argv[1] if len(sys.argv) > 1 else here
 out = sys.argv[2] if len(sys.argv) > 2 else os.path.join(here, "dem_dry_collapse.png")
-experiment = os.path.join(here, "..", "..", "shared", "validation", "zhang2009_dry_collapse_6layers.csv")
+experiment = os.path.join(here, "..", "tests", "validation", "data", "zhang2009_dry_collapse_6layers.csv")
 
 
 def read(path):

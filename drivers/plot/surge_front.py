@@ -16,7 +16,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-EXPERIMENT = os.path.join(HERE, "..", "..", "..", "shared", "validation",
+EXPERIMENT = os.path.join(HERE, "..", "..", "tests", "validation", "data",
                           "martin_moyce1952_surge_front.csv")
 
 

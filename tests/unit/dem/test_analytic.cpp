@@ -1,4 +1,4 @@
-// Closed-form checks of the contact model (../shared/validation/dem_analytic.md): a disk on an
+// Closed-form checks of the contact model (closed forms in doc/dem.md): a disk on an
 // incline rolling and sliding on both sides of mu = tan(theta) / 3, a block sticking and sliding,
 // bodies and a pile at rest that do not drift, and the mechanical energy of a closed dry system
 // that never increases. The incline is the tank floor with gravity turned by theta.

@@ -1,5 +1,5 @@
 // Coefficients (eqs. 10-13, 18) and normal collisions against the closed-form restitution of the
-// linear spring-dashpot (../shared/validation/dem_analytic.md), derived from the code's own k and
+// linear spring-dashpot (closed forms in doc/dem.md), derived from the code's own k and
 // c. The force is linear until the overlap returns to zero (tension allowed while delta > 0), so
 // e = exp(-zeta pi / sqrt(1 - zeta^2)) with zeta = c / (2 sqrt(k m*)).
 #include <gtest/gtest.h>

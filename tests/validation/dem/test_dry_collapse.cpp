@@ -21,8 +21,7 @@ struct Row {
 };
 
 std::vector<Row> experiment() {
-  std::ifstream f(std::string(PICDEM_SHARED_DIR) +
-                  "/validation/zhang2009_dry_collapse_6layers.csv");
+  std::ifstream f(std::string(PICDEM_DATA_DIR) + "/zhang2009_dry_collapse_6layers.csv");
   std::vector<Row> rows;
   std::string line;
   while (std::getline(f, line)) {

@@ -17,7 +17,7 @@ struct Point {
   double tau, z_over_a;
 };
 std::vector<Point> experiment() {
-  std::ifstream in(std::string(PICDEM_SHARED_DIR) + "/validation/martin_moyce1952_surge_front.csv");
+  std::ifstream in(std::string(PICDEM_DATA_DIR) + "/martin_moyce1952_surge_front.csv");
   std::vector<Point> out;
   std::string line;
   while (std::getline(in, line)) {
