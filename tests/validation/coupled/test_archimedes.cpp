@@ -18,10 +18,9 @@ double submerged_segment_area(double r, double centre_above_level) {
 }
 }  // namespace
 
-// A floating body heaves about its equilibrium with little damping: the submerged area of the
-// disk is a time mean over the second half of the run (several heave periods of ~0.2 s). The box
-// radiates its heave away into a long tank (cases/floating_box): over the second half the heave
-// has died out and no reflection has come back yet, so the box must sit still at its draft.
+// The box radiates its heave away into a long tank (cases/floating_box): over the second half of
+// the run the heave has died down and the walls' reflections are not yet back, so the box must sit
+// still at its draft.
 TEST(Archimedes, FloatingBoxSettlesAtItsDraft) {
   core::Comm comm;
   const auto params = test_support::load_case(comm, "cases/floating_box/case.yaml");
@@ -62,6 +61,8 @@ TEST(Archimedes, FloatingBoxSettlesAtItsDraft) {
   EXPECT_LT(worst_tilt, 0.05);
 }
 
+// The disk heaves about its equilibrium with little damping in its short tank: its submerged area
+// is a time mean over the second half of the run (several heave periods of ~0.2 s).
 TEST(Archimedes, FloatingDiskHalfSubmerged) {
   core::Comm comm;
   const auto params = test_support::load_case(comm, "cases/floating_disk/case.yaml");
