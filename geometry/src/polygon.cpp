@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "picdem/core/error.hpp"
+#include "picdem/geometry/shape_registry.hpp"
 
 namespace picdem::geometry {
 
@@ -151,6 +152,72 @@ MassProperties Polygon::mass_properties() const {
 bool Polygon::contains(const Vec2& q) const {
   const auto p = to_cgal(vertices_);
   return CGAL::bounded_side_2(p.begin(), p.end(), P2(q.x, q.z), K()) != CGAL::ON_UNBOUNDED_SIDE;
+}
+
+namespace {
+
+void declare_theta(core::ParamSchema& v) {
+  v.real("theta", 0.0, "initial rotation about the centroid, counter-clockwise [rad]");
+}
+
+/// The input vertices are world coordinates at theta = 0: the centroid is the centre.
+std::vector<PlacedShape> placed_polygon(const std::vector<Vec2>& vertices, double theta) {
+  auto poly = std::make_shared<const Polygon>(vertices);
+  return {{poly, {poly->centroid_offset(), theta}}};
+}
+
+}  // namespace
+
+/// The pairs x0, z0, x1, z1, ... of the key `key` of `s` as points.
+std::vector<Vec2> vertex_pairs(const core::Params& s, const std::string& key) {
+  const auto v = s.reals(key);
+  if (v.size() % 2 != 0) {
+    std::ostringstream m;
+    m << "key '" << s.full_path(key) << "' has " << v.size()
+      << " numbers; allowed: pairs x, z (an even count >= 6)";
+    throw core::InputError(m.str());
+  }
+  std::vector<Vec2> verts;
+  for (std::size_t n = 0; n + 1 < v.size(); n += 2) verts.push_back({v[n], v[n + 1]});
+  return verts;
+}
+
+ShapeType polygon_type() {
+  ShapeType t;
+  t.name = "polygon";
+  t.doc = "a simple polygon; its centroid is its centre";
+  t.declare = [](core::ParamSchema& v) {
+    v.reals("vertices", {},
+            "x0, z0, x1, z1, ... counter-clockwise, world coordinates at theta = 0 [m]")
+        .size(6, 1 << 20)
+        .is_required();
+    declare_theta(v);
+  };
+  t.build = [](const core::Params& s, const BuildContext&) {
+    return placed_polygon(vertex_pairs(s, "vertices"), s.real("theta"));
+  };
+  return t;
+}
+
+ShapeType polygon_file_type() {
+  ShapeType t;
+  t.name = "polygon_file";
+  t.doc = "a polygon read from a vertex file (one 'x z' per line)";
+  t.declare = [](core::ParamSchema& v) {
+    v.string("file", "", {}, "vertex file, counter-clockwise, world coordinates at theta = 0")
+        .is_required();
+    v.reals("offset", {0.0, 0.0}, "shift (x, z) added to every vertex [m]").size(2, 2);
+    declare_theta(v);
+  };
+  t.build = [](const core::Params& s, const BuildContext&) {
+    const Polygon file_poly = Polygon::from_file(s.string("file"));
+    const auto o = s.reals("offset");
+    std::vector<Vec2> verts;
+    for (const Vec2& v : file_poly.vertices())
+      verts.push_back(v + file_poly.centroid_offset() + Vec2{o[0], o[1]});
+    return placed_polygon(verts, s.real("theta"));
+  };
+  return t;
 }
 
 }  // namespace picdem::geometry

@@ -253,14 +253,4 @@ Vec2 support_point(const std::vector<BoundaryPiece>& boundary, const Vec2& d) {
   return best;
 }
 
-bool is_centred_circle(const std::vector<BoundaryPiece>& boundary, double& radius) {
-  if (boundary.size() != 1) return false;
-  const auto* a = std::get_if<Arc>(&boundary.front());
-  if (!a) return false;
-  const double tol = 1e-12 * std::max(1.0, a->radius);
-  if (length(a->centre) > tol || std::abs(a->phi1 - a->phi0 - two_pi) > 1e-9) return false;
-  radius = a->radius;
-  return true;
-}
-
 }  // namespace picdem::dem

@@ -77,13 +77,11 @@ TEST(ContactGeometry, SegmentArcInteriorAndEndpoint) {
   EXPECT_NEAR(q.distance, 2.0, 1e-15);
 }
 
-TEST(ContactGeometry, SupportPointAndCircleDetection) {
+TEST(ContactGeometry, SupportPointAndCircleFastPath) {
   const geometry::Circle c(0.25);
-  double r = 0.0;
-  EXPECT_TRUE(is_centred_circle(c.boundary(), r));
-  EXPECT_EQ(r, 0.25);
+  EXPECT_EQ(c.fast_paths().centred_circle_radius, 0.25);
   const geometry::Polygon sq({{0, 0}, {1, 0}, {1, 1}, {0, 1}});
-  EXPECT_FALSE(is_centred_circle(sq.boundary(), r));
+  EXPECT_EQ(sq.fast_paths().centred_circle_radius, 0.0);
   const auto w = to_world(sq.boundary(), {{2.0, 2.0}, 0.25 * pi});
   const core::Vec2 low = support_point(w, {0.0, -1.0});
   EXPECT_NEAR(low.x, 2.0, 1e-14);

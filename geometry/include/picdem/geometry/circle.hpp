@@ -18,6 +18,8 @@ class Circle : public Shape {
   MassProperties mass_properties() const override;
   double bounding_radius() const override { return radius_; }
   bool contains(const Vec2& body_point) const override;
+  /// The centred-circle fast path (eq. 19 in closed form).
+  FastPaths fast_paths() const override { return {radius_}; }
 
  private:
   double radius_;

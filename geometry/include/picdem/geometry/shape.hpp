@@ -43,6 +43,14 @@ struct MassProperties {
   double polar_moment = 0.0;  ///< m^4 about the centre of mass (inertia = density x this)
 };
 
+/// Optional fast paths a shape may declare. The contact code takes them instead of the general
+/// piece-by-piece closest points; a shape that declares none is handled by the general code.
+struct FastPaths {
+  /// > 0: the shape is one full circle of this radius centred on its body origin, and contacts
+  /// use eq. 19 in closed form (delta = r_i + r_j + 2 dx - d_ij). 0: no such path.
+  double centred_circle_radius = 0.0;
+};
+
 class Shape {
  public:
   virtual ~Shape() = default;
@@ -55,8 +63,23 @@ class Shape {
   virtual double bounding_radius() const = 0;
   /// True when the body-frame point is inside or on the boundary.
   virtual bool contains(const Vec2& body_point) const = 0;
+  /// The fast paths this shape declares (none by default).
+  virtual FastPaths fast_paths() const { return {}; }
 };
 
 using ShapePtr = std::shared_ptr<const Shape>;
+
+/// Area, centroid and polar second moment (about the centroid) of a region.
+struct RegionProperties {
+  double area = 0.0;
+  Vec2 centroid;
+  double polar_moment = 0.0;
+};
+
+/// The region inside a closed counter-clockwise loop of segments and convex arcs (each arc's
+/// solid inside its circle, span below 2 pi), exactly: the polygon of the pieces' end points plus
+/// one circular segment (between chord and arc) per arc. The loop must close: each piece starts
+/// where the previous one ends.
+RegionProperties loop_properties(const std::vector<BoundaryPiece>& loop);
 
 }  // namespace picdem::geometry

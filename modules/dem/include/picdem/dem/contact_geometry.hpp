@@ -2,7 +2,8 @@
 // Closest points between the real boundaries of two bodies, built from the segments and arcs of
 // geometry::Shape::boundary(). This is all the contact law needs for any pair of shapes: the gap
 // between the real boundaries, the contact point (midpoint) and the normal (along the closest
-// points). Circles take an exact fast path.
+// points). Shapes declaring the centred-circle fast path (Shape::fast_paths) skip this in the
+// DEM.
 #include <vector>
 
 #include "picdem/core/vec2.hpp"
@@ -53,8 +54,5 @@ void face_weighted(const ClosestPoints& cp, double gap, Vec2& on_a, Vec2& on_b);
 
 /// The boundary point farthest along the unit direction d (support point of the curve).
 Vec2 support_point(const std::vector<BoundaryPiece>& boundary, const Vec2& d);
-
-/// True when the boundary is one full circle centred on the body origin; `radius` gets its radius.
-bool is_centred_circle(const std::vector<BoundaryPiece>& boundary, double& radius);
 
 }  // namespace picdem::dem

@@ -81,7 +81,7 @@ class DemSolver {
   struct ShapeInfo {
     geometry::ShapePtr shape;
     std::vector<geometry::BoundaryPiece> body;
-    bool circle = false;
+    bool circle = false;  ///< declares the centred-circle fast path (Shape::fast_paths)
     double radius = 0.0;  ///< bounding radius
   };
   /// Accumulated tangential springs of one owned solid, sorted by partner key.

@@ -43,7 +43,8 @@ struct SolidSpec {
   double density = 0.0;
 };
 
-/// Declares dem/* and the `solids` family (variants disk, polygon, polygon_file, cylinder_stack).
+/// Declares dem/* and the `solids` family: one variant per registered shape type
+/// (geometry::shape_types()), each with the keys of its motion (density, velocity, omega).
 void declare_parameters(core::ParamSchema& schema);
 
 /// The DEM settings of a validated case; `h` is the grid cell size.
