@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
       particles.x.push_back(x);
       particles.z.push_back(z);
       particles.scalars["speed"].push_back(std::hypot(x, z));
-      particles.scalars["id"].push_back(static_cast<double>(g));
+      particles.integers["id"].push_back(g);
     }
     io::Polylines solids, obstacles;
     for (int b = comm.rank(); b < 100; b += comm.size()) {
@@ -73,8 +73,8 @@ int main(int argc, char** argv) {
     }
     io::FrameWriter frames("bench_frames_out", d);
     const double t_frame = best_of(repeats, comm, [&] {
-      frames.write(0.0, 0, {{"pressure", &p}, {"state", &state}, {"speed", &speed}}, particles,
-                   solids, obstacles);
+      frames.write(0.0, 0, {{{"pressure", &p}, {"state", &state}, {"speed", &speed}}, {}, {}},
+                   particles, solids, obstacles);
     });
     const double t_png = best_of(repeats, comm, [&] {
       io::render_snapshot(comm, "bench_frames_out/snapshot.png",

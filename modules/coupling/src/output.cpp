@@ -8,6 +8,7 @@
 
 #include "picdem/core/log.hpp"
 #include "picdem/core/timer.hpp"
+#include "picdem/coupling/checkpoint.hpp"
 #include "picdem/dem/dem_solver.hpp"
 #include "picdem/geometry/obstacles.hpp"
 #include "picdem/geometry/outline.hpp"
@@ -37,7 +38,8 @@ Output::Output(core::Comm comm, const core::Params& params, const grid::Decompos
   comm_.barrier();
   if (params_.boolean("output/paraview"))
     frames_writer_ = std::make_unique<io::FrameWriter>(
-        dir_, d, append, resume ? resume->last_frame_step : std::numeric_limits<long long>::max());
+        dir_, d, append, resume ? resume->last_frame_step : std::numeric_limits<long long>::max(),
+        code_version());
   std::vector<std::string> columns = Diagnostics::scalar_names();
   const auto probes = params.reals("output/level_probes");
   for (std::size_t n = 0; n < probes.size(); ++n)
@@ -85,10 +87,9 @@ void Output::write_frame(double t, long long step, const particles::ParticleSet&
   auto& speed = points.scalars["speed"];
   speed.resize(ps.x.size());
   for (std::size_t n = 0; n < ps.x.size(); ++n) speed[n] = std::hypot(ps.u[n], ps.w[n]);
-  points.scalars["u"] = ps.u;
-  points.scalars["w"] = ps.w;
-  auto& ids = points.scalars["id"];
-  ids.assign(ps.id.begin(), ps.id.end());
+  points.vectors["velocity"] = {ps.u, ps.w};
+  points.integers["id"].assign(ps.id.begin(), ps.id.end());
+  points.units = {{"speed", "m/s"}, {"velocity", "m/s"}, {"id", "1"}};
 
   io::Polylines solid_lines, obstacle_lines;
   if (dem) {
@@ -96,7 +97,7 @@ void Output::write_frame(double t, long long step, const particles::ParticleSet&
     for (const auto& st : dem->owned()) {
       const auto shape = dem->shape_of(st.id);
       solid_lines.lines.push_back(geometry::outline(*shape, {st.x, st.theta}, 0.5 * spec.h));
-      solid_lines.body_id.push_back(static_cast<double>(st.id));
+      solid_lines.body_id.push_back(st.id);
     }
     for (const auto& st : dem->gather_all())
       if (data)
@@ -107,19 +108,17 @@ void Output::write_frame(double t, long long step, const particles::ParticleSet&
   for (std::size_t o = 0; comm_.is_root() && o < obstacles.size(); ++o)
     for (const auto& line : geometry::outlines(obstacles[o])) {
       obstacle_lines.lines.push_back(line);
-      obstacle_lines.body_id.push_back(static_cast<double>(o));
+      obstacle_lines.body_id.push_back(static_cast<std::int64_t>(o));
     }
 
   if (data) last_frame_step_ = step;
   if (frames_writer_ && data) {
-    grid::CellField state(decomp_, grid::Stagger::Cell);
-    const auto b = state.storage();
-    for (int k = b.k0; k < b.k1; ++k)
-      for (int i = b.i0; i < b.i1; ++i) state(i, k) = cells.data().empty() ? 0.0 : cells(i, k);
-    std::map<std::string, const grid::CellField*> fields;
-    if (!p.data().empty()) fields["pressure"] = &p;
-    fields["cell_state"] = &state;
-    frames_writer_->write(t, step, fields, points, solid_lines, obstacle_lines);
+    const fluid::CellStates air(decomp_, grid::Stagger::Cell, 0);
+    io::CellArrays arrays;
+    if (!p.data().empty()) arrays.reals["pressure"] = &p;
+    arrays.codes["cell_state"] = cells.data().empty() ? &air : &cells;
+    arrays.units = {{"pressure", "Pa"}, {"cell_state", "code"}};
+    frames_writer_->write(t, step, arrays, points, solid_lines, obstacle_lines);
   }
   if (params_.boolean("output/png")) {
     const core::Box2 tank{spec.origin, spec.origin + core::Vec2{spec.length(), spec.height()}};

@@ -75,4 +75,34 @@ void write_rows(hid_t file, const std::string& name, hid_t mem_type, const void*
   write_block(file, name, mem_type, data, cols > 1 ? 2 : 1, dims, start, count);
 }
 
+namespace {
+void scalar_attribute(hid_t file, const std::string& path, const std::string& name, hid_t type,
+                      const void* data) {
+  Handle space(check(H5Screate(H5S_SCALAR), "H5Screate " + name), H5Sclose);
+  Handle a(check(H5Acreate_by_name(file, path.c_str(), name.c_str(), type, space, H5P_DEFAULT,
+                                   H5P_DEFAULT, H5P_DEFAULT),
+                 "H5Acreate_by_name " + path + " " + name),
+           H5Aclose);
+  check_status(H5Awrite(a, type, data), "H5Awrite " + path + " " + name);
+}
+}  // namespace
+
+void set_attribute(hid_t file, const std::string& path, const std::string& name,
+                   const std::string& value) {
+  Handle type(check(H5Tcopy(H5T_C_S1), "H5Tcopy"), H5Tclose);
+  check_status(H5Tset_size(type, value.empty() ? 1 : value.size()), "H5Tset_size");
+  check_status(H5Tset_strpad(type, H5T_STR_NULLPAD), "H5Tset_strpad");
+  check_status(H5Tset_cset(type, H5T_CSET_UTF8), "H5Tset_cset");
+  const std::string v = value.empty() ? std::string(1, '\0') : value;
+  scalar_attribute(file, path, name, type, v.data());
+}
+
+void set_attribute(hid_t file, const std::string& path, const std::string& name, double value) {
+  scalar_attribute(file, path, name, H5T_NATIVE_DOUBLE, &value);
+}
+
+void set_attribute(hid_t file, const std::string& path, const std::string& name, long long value) {
+  scalar_attribute(file, path, name, H5T_NATIVE_LLONG, &value);
+}
+
 }  // namespace picdem::io::h5

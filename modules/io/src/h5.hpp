@@ -77,4 +77,11 @@ void write_block(hid_t file, const std::string& name, hid_t mem_type, const void
 void write_rows(hid_t file, const std::string& name, hid_t mem_type, const void* data,
                 long long local_rows, long long offset, long long global_rows, int cols);
 
+/// Collective (every rank passes the same value): attribute `name` on the object at `path` of
+/// `file` ("/" is the root group). Strings are fixed-length, null-padded, UTF-8.
+void set_attribute(hid_t file, const std::string& path, const std::string& name,
+                   const std::string& value);
+void set_attribute(hid_t file, const std::string& path, const std::string& name, double value);
+void set_attribute(hid_t file, const std::string& path, const std::string& name, long long value);
+
 }  // namespace picdem::io::h5

@@ -9,6 +9,7 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <memory>
 #include <sstream>
@@ -160,7 +161,8 @@ std::vector<Particle> all_particles() {
 }
 
 struct Frame {
-  std::unique_ptr<grid::CellField> p, state;
+  std::unique_ptr<grid::CellField> p;
+  std::unique_ptr<grid::GridArray<signed char>> state;
   io::PointSet particles;
   io::Polylines solids, obstacles;
 };
@@ -168,20 +170,23 @@ struct Frame {
 Frame make_frame(const grid::Decomposition& d, double shift) {
   Frame f;
   f.p = std::make_unique<grid::CellField>(d, grid::Stagger::Cell, -1.0);
-  f.state = std::make_unique<grid::CellField>(d, grid::Stagger::Cell, -1.0);
+  f.state = std::make_unique<grid::GridArray<signed char>>(d, grid::Stagger::Cell, -1);
   const auto own = d.owned_cells();
   for (int k = own.k0; k < own.k1; ++k)
     for (int i = own.i0; i < own.i1; ++i) {
       (*f.p)(i, k) = pressure(i, k) + shift;
-      (*f.state)(i, k) = (i + k) % 3;
+      (*f.state)(i, k) = static_cast<signed char>((i + k) % 3);
     }
   for (const auto& q : all_particles())
     if (d.owner_of_point({q.x, q.z}) == d.rank()) {
       f.particles.x.push_back(q.x);
       f.particles.z.push_back(q.z);
-      f.particles.scalars["id"].push_back(q.id);
+      f.particles.integers["id"].push_back(static_cast<std::int64_t>(q.id));
       f.particles.scalars["speed"].push_back(q.id * 0.5 + shift);
+      f.particles.vectors["velocity"].first.push_back(q.x + shift);
+      f.particles.vectors["velocity"].second.push_back(-q.z);
     }
+  f.particles.units = {{"speed", "m/s"}, {"velocity", "m/s"}, {"id", "1"}};
   // Two solids, owned by the last rank; one obstacle from rank 0.
   if (d.rank() == d.size() - 1) {
     f.solids.lines = {{{1, 1}, {1.5, 1}, {1.5, 1.2}}, {{2, 0.5}, {2.2, 0.5}, {2.2, 0.7}, {2, 0.7}}};
@@ -194,12 +199,19 @@ Frame make_frame(const grid::Decomposition& d, double shift) {
   return f;
 }
 
+io::CellArrays arrays(const Frame& f) {
+  io::CellArrays a;
+  a.reals["pressure"] = f.p.get();
+  a.codes["state"] = f.state.get();
+  a.units = {{"pressure", "Pa"}, {"state", "code"}};
+  return a;
+}
+
 void write_frames(const grid::Decomposition& d, const std::string& dir) {
-  io::FrameWriter w(dir, d);
+  io::FrameWriter w(dir, d, false, std::numeric_limits<long long>::max(), "test 1.0");
   for (int step = 0; step < 3; ++step) {
     Frame f = make_frame(d, step);
-    w.write(0.1 * step, 10 * step, {{"pressure", f.p.get()}, {"state", f.state.get()}}, f.particles,
-            f.solids, f.obstacles);
+    w.write(0.1 * step, 10 * step, arrays(f), f.particles, f.solids, f.obstacles);
   }
 }
 
@@ -248,6 +260,37 @@ std::vector<double> read_h5(const std::string& file, const std::string& dset,
   return v;
 }
 
+// A numeric attribute of the object at `path`, as a double.
+double read_h5_attribute(const std::string& file, const std::string& path,
+                         const std::string& name) {
+  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  double v = -1.0;
+  const hid_t a = H5Aopen_by_name(f, path.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
+  EXPECT_GE(a, 0) << file << " " << path << " " << name;
+  if (a >= 0) {
+    H5Aread(a, H5T_NATIVE_DOUBLE, &v);
+    H5Aclose(a);
+  }
+  H5Fclose(f);
+  return v;
+}
+
+std::string units_of(const std::string& file, const std::string& dataset) {
+  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  std::string v;
+  const hid_t a = H5Aopen_by_name(f, dataset.c_str(), "units", H5P_DEFAULT, H5P_DEFAULT);
+  EXPECT_GE(a, 0) << file << " " << dataset;
+  if (a >= 0) {
+    const hid_t t = H5Aget_type(a);
+    v.assign(H5Tget_size(t), '\0');
+    H5Aread(a, t, v.data());
+    H5Tclose(t);
+    H5Aclose(a);
+  }
+  H5Fclose(f);
+  return v;
+}
+
 // Every HDF DataItem below `e`: dataset exists with the stated dimensions.
 void check_data_items(const Element& e, const std::string& dir, int& count) {
   if (e.name == "DataItem" && e.attr.count("Format") && e.attr.at("Format") == "HDF") {
@@ -264,6 +307,48 @@ void check_data_items(const Element& e, const std::string& dir, int& count) {
   for (const auto& c : e.children) check_data_items(c, dir, count);
 }
 
+Element read_index(const std::string& dir) {
+  std::ifstream in(dir + "/picdem.xdmf");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return XmlParser(ss.str()).parse_document();
+}
+
+// The temporal collections of the index, by name, in file order.
+std::vector<const Element*> collections(const Element& root, std::vector<std::string>* names) {
+  const auto domains = root.all("Domain");
+  EXPECT_EQ(domains.size(), 1u);
+  if (domains.empty()) return {};
+  const auto c = domains[0]->all("Grid");
+  for (const auto* g : c) {
+    names->push_back(g->attr.at("Name"));
+    EXPECT_EQ(g->attr.at("GridType"), "Collection");
+    EXPECT_EQ(g->attr.at("CollectionType"), "Temporal");
+  }
+  return c;
+}
+
+// The step of a grid entry (its Information element).
+long long step_of(const Element& g) {
+  const auto info = g.all("Information");
+  EXPECT_EQ(info.size(), 1u);
+  if (info.empty()) return -1;
+  EXPECT_EQ(info[0]->attr.at("Name"), "step");
+  return std::stoll(info[0]->attr.at("Value"));
+}
+
+std::string root_string_attribute(const std::string& file, const std::string& name) {
+  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  const hid_t a = H5Aopen(f, name.c_str(), H5P_DEFAULT);
+  const hid_t t = H5Aget_type(a);
+  std::string v(H5Tget_size(t), '\0');
+  H5Aread(a, t, v.data());
+  H5Tclose(t);
+  H5Aclose(a);
+  H5Fclose(f);
+  return v;
+}
+
 TEST(Frames, XdmfWellFormedAndDatasetsMatchTheGlobalReference) {
   const Comm comm;
   const grid::Decomposition d(spec(), comm, 1);
@@ -271,78 +356,112 @@ TEST(Frames, XdmfWellFormedAndDatasetsMatchTheGlobalReference) {
   write_frames(d, dir);
   comm.barrier();
   if (!comm.is_root()) return;
-  std::ifstream in(dir + "/picdem.xdmf");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const Element root = XmlParser(ss.str()).parse_document();
+  const Element root = read_index(dir);
   ASSERT_EQ(root.name, "Xdmf");
-  ASSERT_EQ(root.all("Domain").size(), 1u);
-  const auto series = root.all("Domain")[0]->all("Grid");
-  ASSERT_EQ(series.size(), 1u);
-  EXPECT_EQ(series[0]->attr.at("CollectionType"), "Temporal");
-  const auto frames = series[0]->all("Grid");
-  ASSERT_EQ(frames.size(), 3u);
+  EXPECT_EQ(root.attr.at("Version"), "3.0");
+  std::vector<std::string> names;
+  const auto series = collections(root, &names);
+  // One temporal collection per grid, the particles last (meshio reads the last one).
+  ASSERT_EQ(names, (std::vector<std::string>{"cells", "solids", "obstacles", "particles"}));
   int items = 0;
-  for (std::size_t n = 0; n < frames.size(); ++n) {
-    const Element& fr = *frames[n];
-    EXPECT_EQ(fr.attr.at("CollectionType"), "Spatial");
-    ASSERT_EQ(fr.all("Time").size(), 1u);
-    EXPECT_DOUBLE_EQ(std::stod(fr.all("Time")[0]->attr.at("Value")), 0.1 * n);
-    std::vector<std::string> names;
-    for (const auto* g : fr.all("Grid")) names.push_back(g->attr.at("Name"));
-    EXPECT_EQ(names, (std::vector<std::string>{"fluid", "particles", "solids", "obstacles"}));
-    const Element& fluid = *fr.all("Grid")[0];
-    EXPECT_EQ(fluid.all("Topology")[0]->attr.at("TopologyType"), "3DCoRectMesh");
-    EXPECT_EQ(numbers(fluid.all("Topology")[0]->attr.at("Dimensions")),
-              (std::vector<long long>{2, kNz + 1, kNx + 1}));
-    // Origin and spacing in (Z, Y, X) order: the slab Z in [-h, 0], the tank corner at (0, 0).
-    const auto geometry = fluid.all("Geometry")[0]->all("DataItem");
-    ASSERT_EQ(geometry.size(), 2u);
-    std::istringstream origin(geometry[0]->text), spacing(geometry[1]->text);
-    double oz, oy, ox, dz, dy, dx;
-    origin >> oz >> oy >> ox;
-    spacing >> dz >> dy >> dx;
-    EXPECT_EQ(oz, -kH);
-    EXPECT_EQ(oy, 0.0);
-    EXPECT_EQ(ox, 0.0);
-    EXPECT_EQ(dz, kH);
-    EXPECT_EQ(dy, kH);
-    EXPECT_EQ(dx, kH);
-    EXPECT_EQ(fluid.all("Attribute").size(), 2u);
-    check_data_items(fr, dir, items);
+  for (const auto* c : series) {
+    const auto frames = c->all("Grid");
+    ASSERT_EQ(frames.size(), 3u);
+    for (std::size_t n = 0; n < frames.size(); ++n) {
+      const Element& g = *frames[n];
+      EXPECT_EQ(g.attr.at("Name"), c->attr.at("Name"));  // the same name in every frame
+      EXPECT_EQ(g.attr.at("GridType"), "Uniform");
+      ASSERT_EQ(g.all("Time").size(), 1u);
+      EXPECT_DOUBLE_EQ(std::stod(g.all("Time")[0]->attr.at("Value")), 0.1 * n);
+      EXPECT_EQ(step_of(g), 10 * static_cast<long long>(n));
+      check_data_items(g, dir, items);
+    }
   }
-  // Per frame: 2 cell fields + particle xyz, id, speed + 3 per polyline set.
-  EXPECT_EQ(items, 3 * (2 + 3 + 3 + 3));
+  const Element& cells = *series[0]->all("Grid")[2];
+  EXPECT_EQ(cells.all("Topology")[0]->attr.at("TopologyType"), "3DCoRectMesh");
+  EXPECT_EQ(numbers(cells.all("Topology")[0]->attr.at("Dimensions")),
+            (std::vector<long long>{2, kNz + 1, kNx + 1}));
+  // Origin and spacing in (Z, Y, X) order: the slab Z in [-h, 0], the tank corner at (0, 0).
+  const auto geometry = cells.all("Geometry")[0]->all("DataItem");
+  ASSERT_EQ(geometry.size(), 2u);
+  std::istringstream origin(geometry[0]->text), spacing(geometry[1]->text);
+  double oz, oy, ox, dz, dy, dx;
+  origin >> oz >> oy >> ox;
+  spacing >> dz >> dy >> dx;
+  EXPECT_EQ(oz, -kH);
+  EXPECT_EQ(oy, 0.0);
+  EXPECT_EQ(ox, 0.0);
+  EXPECT_EQ(dz, kH);
+  EXPECT_EQ(dy, kH);
+  EXPECT_EQ(dx, kH);
+  ASSERT_EQ(cells.all("Attribute").size(), 2u);
+  EXPECT_EQ(cells.all("Attribute")[1]->attr.at("Name"), "state");
+  EXPECT_EQ(cells.all("Attribute")[1]->all("DataItem")[0]->attr.at("NumberType"), "Int");
+  // Particles: an explicit connectivity, one node per cell.
+  const Element& particles = *series[3]->all("Grid")[2];
+  const Element& topology = *particles.all("Topology")[0];
+  EXPECT_EQ(topology.attr.at("TopologyType"), "Polyvertex");
+  EXPECT_EQ(topology.attr.at("NumberOfElements"), "50");
+  EXPECT_EQ(topology.attr.at("NodesPerElement"), "1");
+  ASSERT_EQ(topology.all("DataItem").size(), 1u);
+  std::vector<std::string> arrays;
+  for (const auto* a : particles.all("Attribute"))
+    arrays.push_back(a->attr.at("Name") + ":" + a->attr.at("AttributeType"));
+  EXPECT_EQ(arrays, (std::vector<std::string>{"velocity:Vector", "speed:Scalar", "id:Scalar",
+                                              "position:Vector"}));
+  // Per frame: 2 cell arrays + 3 per polyline set + particle connectivity, xyz, velocity,
+  // speed, id, position.
+  EXPECT_EQ(items, 3 * (2 + 3 + 3 + 6));
 
   // Values of the last frame (shift 2) against the reference.
   const std::string file = dir + "/frames/frame_000020.h5";
   std::vector<hsize_t> dims;
-  const auto p = read_h5(file, "/fluid/pressure", &dims);
+  const auto p = read_h5(file, "/cells/pressure", &dims);
   ASSERT_EQ(p.size(), static_cast<std::size_t>(kNx * kNz));
   for (int k = 0; k < kNz; ++k)
     for (int i = 0; i < kNx; ++i) EXPECT_EQ(p[k * kNx + i], pressure(i, k) + 2.0) << i << "," << k;
+  const auto state = read_h5(file, "/cells/state", &dims, true);
+  ASSERT_EQ(state.size(), static_cast<std::size_t>(kNx * kNz));
+  for (int k = 0; k < kNz; ++k)
+    for (int i = 0; i < kNx; ++i) EXPECT_EQ(state[k * kNx + i], (i + k) % 3);
   const auto xyz = read_h5(file, "/particles/xyz", &dims);
-  const auto id = read_h5(file, "/particles/id", &dims);
+  const auto id = read_h5(file, "/particles/id", &dims, true);
   const auto speed = read_h5(file, "/particles/speed", &dims);
+  const auto velocity = read_h5(file, "/particles/velocity", &dims);
+  const auto conn = read_h5(file, "/particles/connectivity", &dims, true);
+  EXPECT_EQ(dims, (std::vector<hsize_t>{50, 1}));
   const auto ref = all_particles();
   ASSERT_EQ(id.size(), ref.size());
+  ASSERT_EQ(velocity.size(), 3 * ref.size());
   std::vector<bool> seen(ref.size(), false);
   for (std::size_t n = 0; n < id.size(); ++n) {
     const auto& q = ref[static_cast<std::size_t>(id[n])];
     seen[static_cast<std::size_t>(id[n])] = true;
+    EXPECT_EQ(conn[n], static_cast<double>(n));
     EXPECT_EQ(xyz[3 * n], q.x);
     EXPECT_EQ(xyz[3 * n + 1], q.z);
     EXPECT_EQ(xyz[3 * n + 2], 0.0);
     EXPECT_EQ(speed[n], q.id * 0.5 + 2.0);
+    EXPECT_EQ(velocity[3 * n], q.x + 2.0);
+    EXPECT_EQ(velocity[3 * n + 1], -q.z);
+    EXPECT_EQ(velocity[3 * n + 2], 0.0);
   }
   EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](bool b) { return b; }));
-  const auto conn = read_h5(file, "/solids/connectivity", &dims, true);
-  EXPECT_EQ(conn, (std::vector<double>{2, 3, 0, 1, 2, 2, 4, 3, 4, 5, 6}));
-  EXPECT_EQ(read_h5(file, "/solids/body_id", &dims), (std::vector<double>{3, 4}));
+  const auto sconn = read_h5(file, "/solids/connectivity", &dims, true);
+  EXPECT_EQ(sconn, (std::vector<double>{2, 3, 0, 1, 2, 2, 4, 3, 4, 5, 6}));
+  EXPECT_EQ(read_h5(file, "/solids/body_id", &dims, true), (std::vector<double>{3, 4}));
   const auto sxyz = read_h5(file, "/solids/xyz", &dims);
   ASSERT_EQ(sxyz.size(), 21u);
   EXPECT_EQ(sxyz[3 * 4], 2.2);
   EXPECT_EQ(sxyz[3 * 4 + 1], 0.5);
+  // Attributes of the frame file and units of its datasets.
+  EXPECT_EQ(root_string_attribute(file, "code_version"), "test 1.0");
+  EXPECT_EQ(read_h5_attribute(file, "/", "time"), 0.2);
+  EXPECT_EQ(read_h5_attribute(file, "/", "step"), 20.0);
+  EXPECT_EQ(read_h5_attribute(file, "/", "ranks"), static_cast<double>(comm.size()));
+  EXPECT_EQ(units_of(file, "/cells/pressure"), "Pa");
+  EXPECT_EQ(units_of(file, "/particles/velocity"), "m/s");
+  EXPECT_EQ(units_of(file, "/particles/xyz"), "m");
 }
 
 TEST(Frames, SameFilesOnOneToSizeRanks) {
@@ -358,12 +477,13 @@ TEST(Frames, SameFilesOnOneToSizeRanks) {
     world.barrier();
   }
   if (!world.is_root()) return;
-  // Cell fields and polylines are identical; particles the same set (order follows ranks).
+  // Cell arrays and polylines are identical; particles the same set (order follows ranks).
   for (int n = 2; n <= world.size(); ++n)
-    for (const char* ds : {"/fluid/pressure", "/fluid/state", "/solids/xyz", "/obstacles/xyz"}) {
+    for (const char* ds : {"/cells/pressure", "/cells/state", "/solids/xyz", "/obstacles/xyz"}) {
       std::vector<hsize_t> d1, dn;
-      const auto a = read_h5(dir_for(1) + "_sub/frames/frame_000010.h5", ds, &d1);
-      const auto b = read_h5(dir_for(n) + "_sub/frames/frame_000010.h5", ds, &dn);
+      const bool as_int = std::string(ds) == "/cells/state";
+      const auto a = read_h5(dir_for(1) + "_sub/frames/frame_000010.h5", ds, &d1, as_int);
+      const auto b = read_h5(dir_for(n) + "_sub/frames/frame_000010.h5", ds, &dn, as_int);
       EXPECT_EQ(a, b) << ds << " on " << n << " ranks";
       EXPECT_EQ(d1, dn) << ds;
     }
@@ -377,18 +497,30 @@ TEST(Frames, ContinueExistingDropsFramesFromTheRestartStepOn) {
   io::FrameWriter w(dir, d, /*continue_existing=*/true);
   EXPECT_EQ(comm.is_root() ? w.frames() : 3u, 3u);
   Frame f = make_frame(d, 5);
-  w.write(0.15, 15, {{"pressure", f.p.get()}}, f.particles, f.solids, f.obstacles);
+  w.write(0.15, 15, arrays(f), f.particles, f.solids, f.obstacles);
   comm.barrier();
   if (!comm.is_root()) return;
-  std::ifstream in(dir + "/picdem.xdmf");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const Element root = XmlParser(ss.str()).parse_document();
-  const auto frames = root.all("Domain")[0]->all("Grid")[0]->all("Grid");
-  ASSERT_EQ(frames.size(), 3u);  // 0, 10, 15
-  EXPECT_EQ(frames[0]->attr.at("Name"), "step_000000");
-  EXPECT_EQ(frames[1]->attr.at("Name"), "step_000010");
-  EXPECT_EQ(frames[2]->attr.at("Name"), "step_000015");
+  EXPECT_EQ(w.frames(), 3u);
+  std::vector<std::string> names;
+  const Element root = read_index(dir);
+  const auto series = collections(root, &names);
+  ASSERT_EQ(names, (std::vector<std::string>{"cells", "solids", "obstacles", "particles"}));
+  for (const auto* c : series) {
+    std::vector<long long> steps;
+    for (const auto* g : c->all("Grid")) steps.push_back(step_of(*g));
+    EXPECT_EQ(steps, (std::vector<long long>{0, 10, 15})) << c->attr.at("Name");
+  }
+}
+
+TEST(Frames, RestartAtAnEarlierStepKeepsOnlyTheFramesUpToIt) {
+  const Comm comm;
+  const grid::Decomposition d(spec(), comm, 1);
+  const std::string dir = dir_for(comm.size()) + "_keep";
+  write_frames(d, dir);  // steps 0, 10, 20
+  io::FrameWriter w(dir, d, /*continue_existing=*/true, /*keep_up_to_step=*/10);
+  if (comm.is_root()) {
+    EXPECT_EQ(w.frames(), 2u);
+  }
 }
 
 TEST(Frames, MismatchedInputIsInputError) {
@@ -397,39 +529,40 @@ TEST(Frames, MismatchedInputIsInputError) {
   io::FrameWriter w(dir_for(comm.size()) + "_bad", d);
   Frame f = make_frame(d, 0);
   f.particles.scalars["speed"].push_back(1.0);  // one value too many on every rank
-  EXPECT_THROW(w.write(0.0, 0, {{"pressure", f.p.get()}}, f.particles, f.solids, f.obstacles),
+  EXPECT_THROW(w.write(0.0, 0, arrays(f), f.particles, f.solids, f.obstacles),
                picdem::core::InputError);
   Frame g = make_frame(d, 0);
-  g.solids.body_id.push_back(9.0);
   g.solids.lines.clear();
-  g.solids.body_id = {1.0};
-  EXPECT_THROW(w.write(0.0, 0, {{"pressure", g.p.get()}}, g.particles, g.solids, g.obstacles),
+  g.solids.body_id = {1};
+  EXPECT_THROW(w.write(0.0, 0, arrays(g), g.particles, g.solids, g.obstacles),
+               picdem::core::InputError);
+  Frame h = make_frame(d, 0);
+  h.particles.scalars["id"] = h.particles.scalars["speed"];  // "id" twice
+  EXPECT_THROW(w.write(0.0, 0, arrays(h), h.particles, h.solids, h.obstacles),
                picdem::core::InputError);
 }
 
-TEST(Frames, EmptyParticlesAndOutlinesLeaveOnlyTheFluidGrid) {
+TEST(Frames, EmptyParticlesAndOutlinesLeaveOnlyTheCellGrid) {
   const Comm comm;
   const grid::Decomposition d(spec(), comm, 1);
   const std::string dir = dir_for(comm.size()) + "_empty";
   io::FrameWriter w(dir, d);
   grid::CellField p(d, grid::Stagger::Cell, 2.5);
-  w.write(1.0, 7, {{"pressure", &p}}, {}, {}, {});
+  io::CellArrays a;
+  a.reals["pressure"] = &p;
+  w.write(1.0, 7, a, {}, {}, {});
   comm.barrier();
   if (!comm.is_root()) return;
-  std::ifstream in(dir + "/picdem.xdmf");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const Element root = XmlParser(ss.str()).parse_document();
-  const auto frames = root.all("Domain")[0]->all("Grid")[0]->all("Grid");
-  ASSERT_EQ(frames.size(), 1u);
-  const auto grids = frames[0]->all("Grid");
-  ASSERT_EQ(grids.size(), 1u);
-  EXPECT_EQ(grids[0]->attr.at("Name"), "fluid");
+  std::vector<std::string> names;
+  const Element root = read_index(dir);
+  const auto series = collections(root, &names);
+  ASSERT_EQ(names, std::vector<std::string>{"cells"});
+  ASSERT_EQ(series[0]->all("Grid").size(), 1u);
   int items = 0;
-  check_data_items(*frames[0], dir, items);
+  check_data_items(*series[0], dir, items);
   EXPECT_EQ(items, 1);
   std::vector<hsize_t> dims;
-  const auto v = read_h5(dir + "/frames/frame_000007.h5", "/fluid/pressure", &dims);
+  const auto v = read_h5(dir + "/frames/frame_000007.h5", "/cells/pressure", &dims);
   EXPECT_EQ(v, std::vector<double>(kNx * kNz, 2.5));
 }
 
