@@ -6,8 +6,9 @@ namespace picdem::geometry {
 
 const std::vector<ShapeType>& shape_types() {
   // A new shape adds one line here (doc/shapes.md).
-  static const std::vector<ShapeType> types{disk_type(), polygon_type(), polygon_file_type(),
-                                            cylinder_stack_type()};
+  static const std::vector<ShapeType> types{disk_type(),         polygon_type(),
+                                            polygon_file_type(), cylinder_stack_type(),
+                                            ellipse_type(),      rounded_polygon_type()};
   return types;
 }
 

@@ -45,9 +45,30 @@ const ShapeType& shape_type(const std::string& name);
 std::vector<Vec2> vertex_pairs(const core::Params& s, const std::string& key);
 
 // The registered types, one function per shape file; shape_registry.cpp lists them.
-ShapeType disk_type();            ///< circle.cpp
-ShapeType cylinder_stack_type();  ///< circle.cpp
-ShapeType polygon_type();         ///< polygon.cpp
-ShapeType polygon_file_type();    ///< polygon.cpp
+ShapeType disk_type();             ///< circle.cpp
+ShapeType cylinder_stack_type();   ///< circle.cpp
+ShapeType polygon_type();          ///< polygon.cpp
+ShapeType polygon_file_type();     ///< polygon.cpp
+ShapeType ellipse_type();          ///< ellipse.cpp
+ShapeType rounded_polygon_type();  ///< rounded_polygon.cpp
+
+/// The ellipse x^2 / a^2 + z^2 / b^2 <= 1 of the body frame as a G1 convex arc spline
+/// (ellipse.cpp, doc/shapes.md): its largest distance to the true ellipse is below
+/// ellipse_tolerance(a, b). Throws core::InputError naming `a` or `b` when one is not finite and
+/// > 0, or when max(a, b) / min(a, b) exceeds ellipse_max_aspect.
+ShapePtr make_ellipse(double a, double b);
+/// The bound on the distance between the arc spline and the true ellipse: 1e-4 min(a, b).
+double ellipse_tolerance(double a, double b);
+/// Largest allowed max(a, b) / min(a, b). The flat sides' arcs have radii near a^2 / b, centres
+/// far away, and the cut cells' moments of such arcs lose digits: at aspect 10 the first moments
+/// of the wetted boundary stay within 5e-13 of their exact values (tests/unit/geometry), at 20
+/// they were 8e-12 off, beyond the 1e-12 the cut-cell invariants are held to.
+constexpr double ellipse_max_aspect = 10.0;
+
+/// A convex polygon (CCW vertices, input frame) with every corner rounded by an arc of radius r
+/// tangent to both edges, recentred on its centroid like Polygon; `centroid` (if given) gets the
+/// centroid in the input frame. Throws core::InputError when r is not finite and > 0, the polygon
+/// is not simple, counter-clockwise and convex, or an edge is too short for the arcs at its ends.
+ShapePtr make_rounded_polygon(const std::vector<Vec2>& vertices, double r, Vec2* centroid);
 
 }  // namespace picdem::geometry
