@@ -14,6 +14,7 @@
 #include "picdem/coupling/schema.hpp"
 #include "picdem/coupling/simulation.hpp"
 #include "picdem/fluid/pressure_solver.hpp"
+#include "run_record.hpp"
 
 namespace {
 
@@ -73,6 +74,45 @@ Args parse(int argc, char** argv) {
   return a;
 }
 
+// What a run leaves besides its results: the log (rank 0's output) and run.yaml.
+struct RunParts {
+  RunParts(const picdem::core::Comm& comm, int argc, char** argv) : record(comm, argc, argv) {}
+  picdem::driver::LogTee log;
+  picdem::driver::RunRecord record;
+  std::unique_ptr<picdem::coupling::Simulation> sim;
+  void finish(const std::string& status, int code, const std::string& message) {
+    record.finish(status, code, sim ? sim->step_count() : 0, sim ? sim->time() : 0.0, message);
+  }
+};
+
+// Runs the case (after the parameters are read); the log and run.yaml from the moment the output
+// folder is known.
+int run_case(const picdem::core::Comm& comm, const Args& args, const picdem::core::Params& params,
+             RunParts& run) {
+  std::string out = args.output.empty() ? params.string("output/directory") : args.output;
+  if (out.empty()) out = "output/" + params.string("case/name");
+  run.log.open(comm, out + "/picdem.log", !args.restart.empty());
+  picdem::core::log(comm, "picdem: case " + args.case_file + " on " + std::to_string(comm.size()) +
+                              " rank(s), output in " + out);
+  const auto checkpoints = picdem::coupling::checkpoint_config_from(params, out);
+  const std::string from = args.restart == "latest"
+                               ? picdem::coupling::latest_checkpoint(comm, checkpoints.directory)
+                               : args.restart;
+  run.record.start(out, args.case_file, params, from);
+  if (from.empty()) {
+    run.sim = std::make_unique<picdem::coupling::Simulation>(comm, params, out);
+  } else {
+    run.sim = std::make_unique<picdem::coupling::Simulation>(comm, params, "");
+    run.sim->restart_from(from, out);
+  }
+  run.record.first_step(run.sim->step_count());
+  picdem::coupling::install_stop_signal_handlers();
+  run.sim->enable_checkpoints(checkpoints.directory);
+  run.sim->run(args.max_steps);
+  run.finish(run.sim->stopped_by_signal() ? "stopped_by_signal" : "completed", 0, "");
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -85,6 +125,7 @@ int main(int argc, char** argv) {
   char** kept_argv = kept.data();
   picdem::fluid::LinearAlgebraScope scope(&kept_argc, &kept_argv);  // MPI + Kokkos for Tpetra
   picdem::core::Comm comm;
+  RunParts run(comm, argc, argv);
   try {
     const Args args = parse(argc, argv);
     if (args.help) {
@@ -106,34 +147,19 @@ int main(int argc, char** argv) {
       picdem::core::log(comm, args.case_file + ": valid");
       return 0;
     }
-    std::string out = args.output.empty() ? params.string("output/directory") : args.output;
-    if (out.empty()) out = "output/" + params.string("case/name");
-    picdem::core::log(comm, "picdem: case " + args.case_file + " on " +
-                                std::to_string(comm.size()) + " rank(s), output in " + out);
-    const auto checkpoints = picdem::coupling::checkpoint_config_from(params, out);
-    std::unique_ptr<picdem::coupling::Simulation> sim;
-    if (args.restart.empty()) {
-      sim = std::make_unique<picdem::coupling::Simulation>(comm, params, out);
-    } else {
-      const std::string from = args.restart == "latest" ? picdem::coupling::latest_checkpoint(
-                                                              comm, checkpoints.directory)
-                                                        : args.restart;
-      sim = std::make_unique<picdem::coupling::Simulation>(comm, params, "");
-      sim->restart_from(from, out);
-    }
-    picdem::coupling::install_stop_signal_handlers();
-    sim->enable_checkpoints(checkpoints.directory);
-    sim->run(args.max_steps);
-    return 0;
+    return run_case(comm, args, params, run);
   } catch (const picdem::core::InputError& e) {
     // Raised identically on every rank (input is validated everywhere): report once, exit cleanly.
     picdem::core::log_error(comm, std::string("picdem: error: ") + e.what());
+    run.finish("input_error", 2, e.what());
     return 2;
   } catch (const picdem::core::SolverError& e) {
     picdem::core::log_error(comm, std::string("picdem: the run stopped: ") + e.what());
+    run.finish("solver_error", 3, e.what());
     return 3;
   } catch (const std::exception& e) {
     std::cerr << "picdem: rank " << comm.rank() << ": unexpected error: " << e.what() << std::endl;
+    run.finish("crashed", 4, e.what());  // written when rank 0 is the one that caught it
     MPI_Abort(comm.raw(), 4);
     return 4;
   }

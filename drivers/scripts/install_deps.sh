@@ -7,7 +7,7 @@ packages=(
   libcgal-dev libgmp-dev libmpfr-dev
   libhdf5-openmpi-dev hdf5-tools libopenmpi-dev openmpi-bin
   libgtest-dev zlib1g-dev
-  python3 python3-numpy python3-matplotlib python3-h5py python3-meshio
+  python3 python3-numpy python3-matplotlib python3-h5py python3-meshio python3-yaml
 )
 missing=()
 for p in "${packages[@]}"; do
