@@ -1,6 +1,8 @@
-#include "picdem/dem/contact_law.hpp"
-
+// The paper's linear spring-dashpot (eqs. 7-15, 18) and its registration as the default law.
 #include <cmath>
+
+#include "picdem/dem/contact_law.hpp"
+#include "picdem/dem/contact_law_registry.hpp"
 
 namespace picdem::dem {
 
@@ -55,6 +57,49 @@ ContactForce contact_force(const DemConfig& cfg, const ContactCoefficients& k,
   out.force = -F_n * n + F_t * t;
   out.spring = cfg.tangential == TangentialModel::Accumulated ? s : 0.0;
   return out;
+}
+
+namespace {
+
+class LinearSpringDashpot final : public ContactLaw {
+ public:
+  explicit LinearSpringDashpot(const DemConfig& cfg)
+      : cfg_(cfg), unit_(unit_coefficients(cfg)), dt_(dem_time_step(cfg)) {
+    cfg_.contact_law = nullptr;  // the law keeps the settings, not itself
+  }
+  std::string name() const override { return "linear_spring_dashpot"; }
+  ContactCoefficients coefficients(double m_a, double m_b) const override {
+    // m_ij = (m_i + m_j) / 2 for a pair of solids, m_ij = m_i against a wall or an obstacle
+    return scaled(unit_, m_b == kFixedMass ? m_a : 0.5 * (m_a + m_b));
+  }
+  ContactForce force(const ContactCoefficients& k, const ContactKinematics& c, const BodyMotion& a,
+                     const BodyMotion& b, double spring, double dt) const override {
+    return contact_force(cfg_, k, c, a, b, spring, dt);
+  }
+  double time_step(double, double) const override { return dt_; }
+
+ private:
+  DemConfig cfg_;
+  ContactCoefficients unit_;  // eqs. 10-13 per unit m_ij
+  double dt_;                 // eq. 18
+};
+
+}  // namespace
+
+ContactLawPtr linear_spring_dashpot(const DemConfig& cfg) {
+  return std::make_shared<LinearSpringDashpot>(cfg);
+}
+
+ContactLawType linear_spring_dashpot_type() {
+  ContactLawType t;
+  t.name = "linear_spring_dashpot";
+  t.doc = "the paper's linear spring-dashpot (eqs. 7-15, 18)";
+  t.declare = [](core::ParamSchema& s) {
+    s.real("dem/alpha", 0.4, "damping tuning parameter alpha (eq. 11; linear_spring_dashpot)")
+        .non_negative();
+  };
+  t.build = [](const core::Params&, const DemConfig& cfg) { return linear_spring_dashpot(cfg); };
+  return t;
 }
 
 }  // namespace picdem::dem

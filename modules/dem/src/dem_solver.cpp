@@ -74,8 +74,8 @@ DemSolver::DemSolver(core::Comm comm, DemConfig config, std::vector<core::Box2> 
     obstacles_.push_back(std::move(pieces));
     obstacle_boxes_.push_back(box);
   }
-  dt_dem_ = dem_time_step(cfg_);
-  unit_ = unit_coefficients(cfg_);
+  law_ = cfg_.contact_law ? cfg_.contact_law : linear_spring_dashpot(cfg_);
+  dt_dem_ = law_->time_step(0.0, 0.0);
   send_list_.resize(static_cast<std::size_t>(comm_.size()));
   recv_count_.assign(static_cast<std::size_t>(comm_.size()), 0);
 }
@@ -140,6 +140,11 @@ void DemSolver::add_solids(const std::vector<SolidSpec>& solids) {
       throw core::InputError(m.str());
     }
   skin_ = cfg_.skin > 0.0 ? cfg_.skin : 0.2 * max_radius_;
+  // the time step the law needs for the masses of the case (every solid, the same on all ranks)
+  double m_min = statics_.empty() ? 0.0 : statics_.front().mass, m_max = m_min;
+  for (const auto& st : statics_)
+    m_min = std::min(m_min, st.mass), m_max = std::max(m_max, st.mass);
+  dt_dem_ = law_->time_step(m_min, m_max);
   sort_owned();
   rebuild();
 }
@@ -275,6 +280,7 @@ void DemSolver::collision_forces(double dt_t, Stage& out, std::vector<Springs>* 
   if (new_springs) new_springs->assign(n_owned, Springs{});
   const bool accumulated = cfg_.tangential == TangentialModel::Accumulated;
   const BodyMotion fixed{};
+  const ContactLaw& law = *law_;
   for (std::size_t i = 0; i < n_owned; ++i) {
     const SolidState& s = owned_[i];
     Vec2 F{};
@@ -292,17 +298,17 @@ void DemSolver::collision_forces(double dt_t, Stage& out, std::vector<Springs>* 
     for (int side = 0; side < 4; ++side) {
       if (!wall_pair(s, side, kin)) continue;
       const std::int64_t key = wall_key(side);
-      const auto coef = scaled(unit_, s.mass);
-      const auto cf = contact_force(cfg_, coef, kin, motion_of(s), fixed,
-                                    accumulated ? spring_of(springs_[i], key) : 0.0, dt_t);
+      const auto coef = law.coefficients(s.mass, kFixedMass);
+      const auto cf = law.force(coef, kin, motion_of(s), fixed,
+                                accumulated ? spring_of(springs_[i], key) : 0.0, dt_t);
       add(kin, kin.arm_a, cf.force, key, cf.spring, -1, true);
     }
     for (std::size_t o = 0; o < obstacles_.size(); ++o) {
       if (!obstacle_pair(s, o, kin)) continue;
       const std::int64_t key = obstacle_key(o);
-      const auto coef = scaled(unit_, s.mass);
-      const auto cf = contact_force(cfg_, coef, kin, motion_of(s), fixed,
-                                    accumulated ? spring_of(springs_[i], key) : 0.0, dt_t);
+      const auto coef = law.coefficients(s.mass, kFixedMass);
+      const auto cf = law.force(coef, kin, motion_of(s), fixed,
+                                accumulated ? spring_of(springs_[i], key) : 0.0, dt_t);
       add(kin, kin.arm_a, cf.force, key, cf.spring, -1, true);
     }
     for (int n = nbr_start_[i]; n < nbr_start_[i + 1]; ++n) {
@@ -315,10 +321,9 @@ void DemSolver::collision_forces(double dt_t, Stage& out, std::vector<Springs>* 
       const SolidState& a = i_is_a ? s : p;
       const SolidState& b = i_is_a ? p : s;
       if (!solid_pair(a, b, kin)) continue;
-      // m_ij = (m_i + m_j) / 2
-      const auto coef = scaled(unit_, 0.5 * (a.mass + b.mass));
-      const auto cf = contact_force(cfg_, coef, kin, motion_of(a), motion_of(b),
-                                    accumulated ? spring_of(springs_[i], p.id) : 0.0, dt_t);
+      const auto coef = law.coefficients(a.mass, b.mass);
+      const auto cf = law.force(coef, kin, motion_of(a), motion_of(b),
+                                accumulated ? spring_of(springs_[i], p.id) : 0.0, dt_t);
       add(kin, i_is_a ? kin.arm_a : kin.arm_b, i_is_a ? cf.force : -cf.force, p.id, cf.spring, p.id,
           i_is_a);
     }

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "picdem/core/error.hpp"
+#include "picdem/dem/contact_law_registry.hpp"
 #include "picdem/geometry/shape_registry.hpp"
 
 namespace picdem::dem {
@@ -37,7 +38,12 @@ SolidSpec placed(const core::Params& s, const geometry::PlacedShape& p) {
 
 void declare_parameters(core::ParamSchema& schema) {
   schema.section("dem", "Solid contacts (eqs. 7-19) and DEM subcycles (eqs. 21-25).");
-  schema.real("dem/alpha", 0.4, "damping tuning parameter alpha (eq. 11)").non_negative();
+  // the contact law and each law's own keys (contact_law_registry.hpp)
+  std::vector<std::string> laws;
+  for (const auto& law : contact_law_types()) laws.push_back(law.name);
+  schema.string("dem/contact_law", laws.front(), laws,
+                "contact law (doc/dem.md); each law's own keys follow");
+  for (const auto& law : contact_law_types()) law.declare(schema);
   schema.real("dem/psi", 0.3, "Poisson ratio psi (eqs. 12-13)").non_negative().less_than(0.5);
   schema.real("dem/mu", 0.3, "maximum static friction coefficient mu (eq. 15)").non_negative();
   schema.real("dem/theta", 0.01, "penetration coefficient theta of the normal stiffness (eq. 10)")
@@ -87,6 +93,7 @@ DemConfig config_from(const core::Params& p, double h) {
     throw core::InputError(m.str());
   }
   c.h = h;
+  c.contact_law = contact_law_type(p.string("dem/contact_law")).build(p, c);
   return c;
 }
 

@@ -1,5 +1,12 @@
 #pragma once
-// The spring-dashpot contact law (eqs. 7-15) between two bodies whose closest points are known.
+// Contact laws as plug-ins (doc/dem.md, "adding a contact law" in doc/architecture.md). A law
+// gives the coefficients of a pair from the two masses, the force on body a from the pair's
+// kinematics, and the DEM time step it needs. The paper's linear spring-dashpot (eqs. 7-15, 18)
+// is the default; contact_law_registry.hpp lists the laws a case file may choose.
+#include <limits>
+#include <memory>
+#include <string>
+
 #include "picdem/core/vec2.hpp"
 #include "picdem/dem/parameters.hpp"
 
@@ -7,19 +14,13 @@ namespace picdem::dem {
 
 using core::Vec2;
 
-/// Coefficients of one pair (eqs. 10-13) for m_ij = (m_i + m_j) / 2 (m_ij = m_i for a wall).
+/// The mass given for the fixed side of a pair (a tank wall or an obstacle).
+constexpr double kFixedMass = std::numeric_limits<double>::infinity();
+
+/// The four coefficients of one pair, as its law defines them (for the paper's law eqs. 10-13).
 struct ContactCoefficients {
   double k_n = 0.0, c_n = 0.0, k_t = 0.0, c_t = 0.0;
 };
-ContactCoefficients coefficients(const DemConfig& cfg, double m_ij);
-/// The coefficients per unit m_ij (all four are proportional to m_ij) and their scaling:
-/// coefficients(cfg, m) == scaled(unit_coefficients(cfg), m), bit for bit.
-ContactCoefficients unit_coefficients(const DemConfig& cfg);
-ContactCoefficients scaled(const ContactCoefficients& unit, double m_ij);
-
-/// dt_DEM of eq. 18. With k_xi from eq. 10 it does not depend on the masses:
-/// 2 pi / gamma sqrt(m / k) = 2 pi / gamma sqrt(theta h / |g|).
-double dem_time_step(const DemConfig& cfg);
 
 /// Rigid-body motion of one side of a contact.
 struct BodyMotion {
@@ -45,11 +46,59 @@ struct ContactForce {
   double spring = 0.0;  ///< accumulated tangential displacement after this evaluation
 };
 
-/// Eqs. 7, 8, 15 for body a. `spring` is the accumulated tangential displacement before the
-/// step (accumulated model) and `dt` the step of the tangential displacement (dt_DEM, or dt for
-/// the predicted loads of the pressure equation).
+class ContactLaw {
+ public:
+  virtual ~ContactLaw() = default;
+  /// The value of dem/contact_law that chooses this law.
+  virtual std::string name() const = 0;
+  /// Coefficients of a pair of bodies of masses m_a and m_b (m_b = kFixedMass for a tank wall or
+  /// an obstacle), computed once per pair evaluation and handed back to force().
+  virtual ContactCoefficients coefficients(double m_a, double m_b) const = 0;
+  /// Force on body a. `spring` is the accumulated tangential displacement before the step
+  /// (accumulated model) and `dt` the step of the tangential displacement (dt_DEM, or dt for the
+  /// predicted loads of the pressure equation).
+  virtual ContactForce force(const ContactCoefficients& k, const ContactKinematics& c,
+                             const BodyMotion& a, const BodyMotion& b, double spring,
+                             double dt) const = 0;
+  /// dt_DEM this law needs when the solids' masses lie in [m_min, m_max] (0, 0 before any solid
+  /// is known).
+  virtual double time_step(double m_min, double m_max) const = 0;
+};
+
+using ContactLawPtr = std::shared_ptr<const ContactLaw>;
+
+// ---- the paper's linear spring-dashpot (contact_law.cpp) --------------------------------------
+
+/// Coefficients of one pair (eqs. 10-13) for m_ij = (m_i + m_j) / 2 (m_ij = m_i for a wall).
+ContactCoefficients coefficients(const DemConfig& cfg, double m_ij);
+/// The coefficients per unit m_ij (all four are proportional to m_ij) and their scaling:
+/// coefficients(cfg, m) == scaled(unit_coefficients(cfg), m), bit for bit.
+ContactCoefficients unit_coefficients(const DemConfig& cfg);
+ContactCoefficients scaled(const ContactCoefficients& unit, double m_ij);
+
+/// dt_DEM of eq. 18. With k_xi from eq. 10 it does not depend on the masses:
+/// 2 pi / gamma sqrt(m / k) = 2 pi / gamma sqrt(theta h / |g|).
+double dem_time_step(const DemConfig& cfg);
+
+/// Eqs. 7, 8, 15 for body a (see ContactLaw::force).
 ContactForce contact_force(const DemConfig& cfg, const ContactCoefficients& k,
                            const ContactKinematics& c, const BodyMotion& a, const BodyMotion& b,
                            double spring, double dt);
+
+/// The paper's law as a ContactLaw, from cfg's alpha, psi, mu, theta, gamma, h, g_stiffness and
+/// tangential model ("linear_spring_dashpot").
+ContactLawPtr linear_spring_dashpot(const DemConfig& cfg);
+
+// ---- Hertz-Mindlin (hertz_mindlin.cpp) --------------------------------------------------------
+
+/// F_n = k_hz delta^{3/2} + c_hz delta^{1/4} d(delta)/dt with k_hz = m_ij |g| / (theta h)^{3/2}
+/// and c_hz = a(e) sqrt(m* k_hz) for the normal restitution e (exact for any impact speed),
+/// Mindlin's tangential spring k_t = kappa dF_n/d(delta), Coulomb-capped ("hertz_mindlin"; the
+/// formulas, their sources and the time step in doc/dem.md). Uses cfg's psi, mu, theta, gamma, h,
+/// g_stiffness, gap and tangential model.
+ContactLawPtr hertz_mindlin(const DemConfig& cfg, double restitution);
+
+/// The damping factor a(e) = sqrt(5) (-ln e) / sqrt(pi^2 + ln^2 e) of the Hertz law.
+double hertz_damping_factor(double restitution);
 
 }  // namespace picdem::dem

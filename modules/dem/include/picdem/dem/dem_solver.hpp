@@ -122,7 +122,7 @@ class DemSolver {
   };
   std::vector<Statics> statics_;  // every solid, sorted by id
   const Statics& statics_of(std::int64_t id) const;
-  ContactCoefficients unit_;  // eqs. 10-13 per unit m_ij
+  ContactLawPtr law_;  // cfg_.contact_law, or the paper's law built from cfg_
   double max_radius_ = 0.0, skin_ = 0.0, dt_dem_ = 0.0;
   int last_subcycles_ = 0;
   long long rebuilds_ = 0;

@@ -1,6 +1,7 @@
 #pragma once
 // Case-file keys of the DEM (section `dem`) and of the solids (family `solids`), and the plain
 // structs built from them.
+#include <memory>
 #include <vector>
 
 #include "picdem/core/params.hpp"
@@ -9,6 +10,8 @@
 #include "picdem/geometry/shape.hpp"
 
 namespace picdem::dem {
+
+class ContactLaw;
 
 /// Tangential spring: the paper's one-step displacement U_eta dt_DEM (eq. 8), or the displacement
 /// accumulated over the contact (Zhang et al. 2009), which is history to checkpoint.
@@ -31,6 +34,9 @@ struct DemConfig {
   core::Vec2 gravity{0.0, -9.81};  ///< body force per unit mass added in eq. 21's step (1)
   double g_stiffness = 9.81;       ///< ||g|| in eq. 10 (kept when gravity is switched off)
   double skin = 0.0;  ///< neighbour-list skin [m]; 0: a fifth of the largest bounding radius
+  /// The contact law (dem/contact_law, contact_law_registry.hpp); null: the paper's linear
+  /// spring-dashpot of the fields above.
+  std::shared_ptr<const ContactLaw> contact_law;
 
   double gap() const { return gap_cells * h; }
 };
