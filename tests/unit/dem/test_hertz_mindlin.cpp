@@ -191,3 +191,42 @@ TEST_P(HertzDuration, ElasticImpactLastsTheHertzTime) {
 INSTANTIATE_TEST_SUITE_P(RatiosAndSpeeds, HertzDuration,
                          ::testing::Values(std::make_tuple(rho, 0.05), std::make_tuple(rho, 0.5),
                                            std::make_tuple(10 * rho, 0.5)));
+
+// A disk resting on the floor under gravity: the wall pair (m_ij = m* = m) settles where the
+// spring carries the weight, k_hz delta^{3/2} = m g, i.e. at the overlap theta h that sizes k_hz.
+// Gravity is added once per step before the subcycle (step (1) of eq. 21), so the damping sees
+// the kick's velocity g dt_DEM and the discrete rest state is offset by O(a(e) sqrt(g / (theta h))
+// dt_DEM) = O(1e-3): measured 1.03e-3 theta h.
+TEST(HertzMindlin, DiskRestsOnTheFloorAtThetaH) {
+  DemConfig cfg;
+  cfg.h = h;
+  cfg.contact_law = hertz_mindlin(cfg, 0.5);
+  DemSolver s = solver(cfg, 0.2, 0.2);
+  s.add_solids({disk(0, r, rho, {0.1, r + cfg.gap()})});
+  for (int n = 0; n < 20000; ++n) s.advance(s.dt_dem(), {});
+  const auto& b = s.owned()[0];
+  const double delta = r + cfg.gap() - b.x.z, theta_h = 0.01 * h;
+  std::printf("resting overlap %.6e m, theta h = %.6e m, w = %.2e m/s\n", delta, theta_h, b.v.z);
+  EXPECT_NEAR(delta, theta_h, 2e-3 * theta_h);
+  EXPECT_NEAR(b.v.z, 0.0, 1e-9);
+  EXPECT_EQ(b.x.x, 0.1);
+}
+
+// Against a wall the pair's masses are (m, infinity): m* = m, and e is again the chosen one.
+TEST(HertzMindlin, RestitutionAgainstAWall) {
+  const double e = 0.5, v0 = 0.5;
+  const DemConfig cfg = hertz_config(e);
+  DemSolver s = solver(cfg, 0.2, 0.2);
+  s.add_solids({disk(0, r, rho, {0.1, r + cfg.gap() + 1e-4}, {0.0, -v0})});
+  bool met = false;
+  for (int n = 0; n < 100000; ++n) {
+    s.advance(s.dt_dem(), {});
+    const bool touching = !s.active_contacts().empty();
+    met = met || touching;
+    if (met && !touching) break;
+  }
+  ASSERT_TRUE(met);
+  const double measured = s.owned()[0].v.z / v0;
+  std::printf("wall: e = %g, measured %.6f (%+.2e relative)\n", e, measured, measured / e - 1.0);
+  EXPECT_NEAR(measured, e, 0.005 * e);
+}
