@@ -366,9 +366,7 @@ void advance_solids(SimulationState& s, double dt) {
   if (!s.dem) return;
   core::ScopedTimer timer("solids");
   s.fluid_loads.clear();
-  if (s.has_fluid)
-    s.fluid_loads =
-        fluid_loads(s.scene, s.cut, s.cells, s.p, *s.decomp, *s.dem, s.quadrature, s.comm);
+  if (s.has_fluid) s.fluid_loads = fluid_loads(*s.pressure, s.p, *s.dem);
   s.dem->advance(dt, s.fluid_loads);
 }
 

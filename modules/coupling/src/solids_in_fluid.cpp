@@ -137,6 +137,7 @@ std::vector<fluid::SolidCoupling> solid_couplings(
     }
     auto& a = c.a[it->second];
     a[0] += piece.n_dl.x, a[1] += piece.n_dl.z, a[2] += piece.r_cross_n_dl;
+    add_quadrature_load(piece, quadrature, c.load.data());
   }
   std::vector<fluid::SolidCoupling> out;
   for (auto& [body, c] : by_body) {
@@ -153,28 +154,17 @@ std::vector<fluid::SolidCoupling> solid_couplings(
   return out;
 }
 
-std::vector<core::SolidLoads> fluid_loads(const SolidScene& scene, const geometry::CutCells& cut,
-                                          const fluid::CellStates& cells, const grid::CellField& p,
-                                          const grid::Decomposition& d, const dem::DemSolver& dem,
-                                          const QuadratureOptions& quadrature,
-                                          const core::Comm& comm) {
-  const auto n = solid_count(scene, comm);
-  IdTable load(std::max<std::int64_t>(n, 1), 3);
-  const auto own = d.owned_cells();
-  for (const auto& piece : cut.pieces) {
-    if (piece.body < 0 || !own.contains(piece.i, piece.k) || !fluid_cell(cells, piece.i, piece.k))
-      continue;
-    const double pc = p(piece.i, piece.k);
-    double* r = load.row(scene.states[static_cast<std::size_t>(piece.body)].id);
-    // J p = - sum_c a_{s,c} p_c : force -int p n dl, torque -int p (r x n) dl
-    r[0] -= piece.n_dl.x * pc, r[1] -= piece.n_dl.z * pc, r[2] -= piece.r_cross_n_dl * pc;
-    add_quadrature_load(piece, quadrature, r);
-  }
-  comm.sum_in_place(load.v);
+std::vector<core::SolidLoads> fluid_loads(const fluid::PressureSolver& pressure,
+                                          const grid::CellField& p, const dem::DemSolver& dem) {
+  // J p + F_q from the rows a_{s,c} the pressure matrix was assembled from (fluid module)
+  const auto all = pressure.solid_loads(p);
   std::vector<core::SolidLoads> out;
   for (const auto& st : dem.owned()) {
-    const double* r = load.row(st.id);
-    out.push_back({st.id, {r[0], r[1]}, r[2]});
+    const auto it =
+        std::lower_bound(all.begin(), all.end(), st.id,
+                         [](const core::SolidLoads& l, std::int64_t id) { return l.id < id; });
+    out.push_back(it != all.end() && it->id == st.id ? *it
+                                                     : core::SolidLoads{st.id, {0.0, 0.0}, 0.0});
   }
   return out;
 }

@@ -71,6 +71,9 @@ struct PressureSolver::Impl {
   const grid::Decomposition& d;
   grid::Halo halo;
   SolverSettings settings;
+  /// The couplings of the last assembly, joined, with the cells that are not fluid left out:
+  /// the rows a_{s,c} of the matrix, from which solid_loads() computes J p.
+  mutable std::map<std::int64_t, SolidCoupling> solid_rows;
   Impl(const grid::Decomposition& dec, const core::Params& params)
       : d(dec), halo(dec), settings(settings_from(params)) {}
 };
@@ -82,8 +85,7 @@ PressureSolver::~PressureSolver() = default;
 AssembledSystem PressureSolver::assemble(const CellStates& cells, const Apertures& E,
                                          const grid::FaceField& u, const grid::FaceField& w,
                                          const std::vector<SolidCoupling>& couplings, double dt,
-                                         const FluidConfig& cfg,
-                                         const SurfaceFractions* surface,
+                                         const FluidConfig& cfg, const SurfaceFractions* surface,
                                          const grid::CellField* source) const {
   core::ScopedTimer timer("fluid: pressure assembly");
   const grid::Decomposition& d = impl_->d;
@@ -136,6 +138,7 @@ AssembledSystem PressureSolver::assemble(const CellStates& cells, const Aperture
 
   const auto joined = detail::gather_couplings(couplings, d.comm());
   sys.with_solids = !joined.empty();
+  impl_->solid_rows.clear();
   if (!joined.empty()) {
     // Which coupling cells are fluid: each owner answers for its cells, summed over ranks.
     std::vector<double> fluid_flag;
@@ -146,6 +149,14 @@ AssembledSystem PressureSolver::assemble(const CellStates& cells, const Aperture
         fluid_flag.push_back(inside && own.contains(i, k) && cells(i, k) == kFluid ? 1.0 : 0.0);
       }
     d.comm().sum_in_place(fluid_flag);
+    std::size_t flag = 0;
+    for (const auto& [id, sc] : joined) {
+      SolidCoupling& kept = impl_->solid_rows[id];
+      kept = sc;
+      kept.cells.clear(), kept.a.clear();
+      for (std::size_t a = 0; a < sc.cells.size(); ++a, ++flag)
+        if (fluid_flag[flag] != 0.0) kept.cells.push_back(sc.cells[a]), kept.a.push_back(sc.a[a]);
+    }
     std::size_t flag0 = 0;
     for (const auto& [id, sc] : joined) {
       const std::array<double, 3> Minv{1.0 / sc.mass, 1.0 / sc.mass, 1.0 / sc.inertia};
@@ -531,6 +542,10 @@ SolveStats PressureSolver::solve(const CellStates& cells, const Apertures& E,
     p(static_cast<int>(sys.rows[r] % g.nx), static_cast<int>(sys.rows[r] / g.nx)) = x[r];
   impl_->halo.forward(p);
   return stats;
+}
+
+std::vector<core::SolidLoads> PressureSolver::solid_loads(const grid::CellField& p) const {
+  return detail::coupling_loads(impl_->solid_rows, p, impl_->d);
 }
 
 SolveStats solve_system(const grid::Decomposition& d, const core::Params& params,

@@ -11,7 +11,7 @@ namespace detail {
 
 std::map<std::int64_t, SolidCoupling> gather_couplings(const std::vector<SolidCoupling>& mine,
                                                        const core::Comm& comm) {
-  // Packed as [id, n, m, I, V*0, V*1, V*2, (cell, a0, a1, a2) x n] per solid.
+  // Packed as [id, n, m, I, V*0, V*1, V*2, F0, F1, F2, (cell, a0, a1, a2) x n] per solid.
   std::vector<double> buf;
   for (const auto& s : mine) {
     if (s.cells.size() != s.a.size()) {
@@ -20,8 +20,9 @@ std::map<std::int64_t, SolidCoupling> gather_couplings(const std::vector<SolidCo
         << s.a.size() << " vectors a; they must match";
       throw core::InputError(m.str());
     }
-    buf.insert(buf.end(), {static_cast<double>(s.id), static_cast<double>(s.cells.size()), s.mass,
-                           s.inertia, s.v_star[0], s.v_star[1], s.v_star[2]});
+    buf.insert(buf.end(),
+               {static_cast<double>(s.id), static_cast<double>(s.cells.size()), s.mass, s.inertia,
+                s.v_star[0], s.v_star[1], s.v_star[2], s.load[0], s.load[1], s.load[2]});
     for (std::size_t n = 0; n < s.cells.size(); ++n)
       buf.insert(buf.end(), {static_cast<double>(s.cells[n]), s.a[n][0], s.a[n][1], s.a[n][2]});
   }
@@ -35,7 +36,8 @@ std::map<std::int64_t, SolidCoupling> gather_couplings(const std::vector<SolidCo
     s.mass = all[p + 2];
     s.inertia = all[p + 3];
     s.v_star = {all[p + 4], all[p + 5], all[p + 6]};
-    p += 7;
+    for (std::size_t m = 0; m < 3; ++m) s.load[m] += all[p + 7 + m];
+    p += 10;
     for (std::size_t c = 0; c < n; ++c, p += 4) {
       s.cells.push_back(static_cast<long long>(all[p]));
       s.a.push_back({all[p + 1], all[p + 2], all[p + 3]});
@@ -51,12 +53,9 @@ std::map<std::int64_t, SolidCoupling> gather_couplings(const std::vector<SolidCo
   return joined;
 }
 
-}  // namespace detail
-
-std::vector<core::SolidLoads> pressure_loads(const std::vector<SolidCoupling>& couplings,
-                                             const grid::CellField& p, const CellStates& cells,
-                                             const grid::Decomposition& d) {
-  const auto joined = detail::gather_couplings(couplings, d.comm());
+std::vector<core::SolidLoads> coupling_loads(const std::map<std::int64_t, SolidCoupling>& joined,
+                                             const grid::CellField& p, const grid::Decomposition& d,
+                                             const CellStates* cells) {
   const grid::GridSpec& g = d.spec();
   const core::IndexBox own = d.owned_cells();
   constexpr auto kFluid = static_cast<signed char>(grid::CellState::Fluid);
@@ -67,9 +66,9 @@ std::vector<core::SolidLoads> pressure_loads(const std::vector<SolidCoupling>& c
     for (std::size_t n = 0; n < s.cells.size(); ++n) {
       const long long c = s.cells[n];
       const int i = static_cast<int>(c % g.nx), k = static_cast<int>(c / g.nx);
-      if (c < 0 || !own.contains(i, k) || cells(i, k) != kFluid) continue;
+      if (c < 0 || !own.contains(i, k) || (cells && (*cells)(i, k) != kFluid)) continue;
       // J_s p = - sum_c a_{s,c} p_c  (eq. 6: force and torque of the pressure on the solid)
-      for (int m = 0; m < 3; ++m) f[m] -= s.a[n][static_cast<std::size_t>(m)] * p(i, k);
+      for (std::size_t m = 0; m < 3; ++m) f[m] -= s.a[n][m] * p(i, k);
     }
     sums.insert(sums.end(), {f[0], f[1], f[2]});
   }
@@ -79,12 +78,20 @@ std::vector<core::SolidLoads> pressure_loads(const std::vector<SolidCoupling>& c
   for (const auto& [id, s] : joined) {
     core::SolidLoads l;
     l.id = id;
-    l.force = {sums[m], sums[m + 1]};
-    l.torque = sums[m + 2];
+    l.force = {sums[m] + s.load[0], sums[m + 1] + s.load[1]};
+    l.torque = sums[m + 2] + s.load[2];
     loads.push_back(l);
     m += 3;
   }
   return loads;
+}
+
+}  // namespace detail
+
+std::vector<core::SolidLoads> pressure_loads(const std::vector<SolidCoupling>& couplings,
+                                             const grid::CellField& p, const CellStates& cells,
+                                             const grid::Decomposition& d) {
+  return detail::coupling_loads(detail::gather_couplings(couplings, d.comm()), p, d, &cells);
 }
 
 }  // namespace picdem::fluid

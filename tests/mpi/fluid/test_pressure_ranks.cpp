@@ -70,7 +70,7 @@ Result run(const core::Comm& comm) {
   fluid::PressureSolver solver(d, params);
   Result r;
   r.iterations = solver.solve(cells, E, u, w, couplings, dt, cfg, p).iterations;
-  r.loads = fluid::pressure_loads(couplings, p, cells, d);
+  r.loads = solver.solid_loads(p);
   r.p.assign(static_cast<std::size_t>(s.nx * s.nz), 0.0);
   const auto own = d.owned_cells();
   for (int k = own.k0; k < own.k1; ++k)

@@ -185,6 +185,7 @@ TEST(PressureMatrix, SolidStraddlingRanksByHand) {
 // pieces listed on other ranks are handled like in the assembly. With p = 1000 + cell id:
 //   F_x = -(0.05 * 1011 - 0.05 * 1012) = 0.05,  F_z = -(-0.08 * 1020) = 81.6,
 //   torque = -(0.002 * 1011 - 0.001 * 1012 + 0.003 * 1020) = -4.07
+// plus the p-independent loads of the two lists, (1, 2, 3) + (0.5, 0, -1).
 TEST(PressureLoads, MinusSumOfAPressureByHand) {
   core::Comm comm;
   const auto params = fluid_test::tank_params(0.8, 0.4, 0.1);
@@ -206,18 +207,31 @@ TEST(PressureLoads, MinusSumOfAPressureByHand) {
     auto p0 = part;
     p0.cells = {11, 28};
     p0.a = {{0.05, 0.0, 0.002}, {0.0, 0.02, 0.0}};
+    p0.load = {1.0, 2.0, 3.0};
     mine.push_back(p0);
   }
   if (comm.rank() == comm.size() - 1) {
     auto p1 = part;
     p1.cells = {12, 20};
     p1.a = {{-0.05, 0.0, -0.001}, {0.0, -0.08, 0.003}};
+    p1.load = {0.5, 0.0, -1.0};
     mine.push_back(p1);
   }
   const auto loads = fluid::pressure_loads(mine, p, cells, d);
   ASSERT_EQ(loads.size(), 1u);
   EXPECT_EQ(loads[0].id, 3);
-  EXPECT_NEAR(loads[0].force.x, 0.05, 1e-12);
-  EXPECT_NEAR(loads[0].force.z, 81.6, 1e-12);
-  EXPECT_NEAR(loads[0].torque, -4.07, 1e-12);
+  EXPECT_NEAR(loads[0].force.x, 0.05 + 1.5, 1e-12);
+  EXPECT_NEAR(loads[0].force.z, 81.6 + 2.0, 1e-12);
+  EXPECT_NEAR(loads[0].torque, -4.07 + 2.0, 1e-12);
+  // The solver's loads use the rows it assembled: the same numbers.
+  fluid::PressureSolver solver(d, params);
+  const auto E = fluid::open_apertures(d);
+  FaceField u(d, Stagger::FaceX, 0.0), w(d, Stagger::FaceZ, 0.0);
+  solver.assemble(cells, E, u, w, mine, 0.01, fluid::config_from(params));
+  const auto again = solver.solid_loads(p);
+  ASSERT_EQ(again.size(), 1u);
+  EXPECT_EQ(again[0].id, 3);
+  EXPECT_NEAR(again[0].force.x, 0.05 + 1.5, 1e-12);
+  EXPECT_NEAR(again[0].force.z, 81.6 + 2.0, 1e-12);
+  EXPECT_NEAR(again[0].torque, -4.07 + 2.0, 1e-12);
 }

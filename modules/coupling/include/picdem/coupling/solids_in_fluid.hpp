@@ -47,21 +47,18 @@ struct QuadratureOptions {
 };
 
 /// One SolidCoupling per solid with pieces in this rank's owned fluid cells (partial lists,
-/// joined by id in the solver): a_{s,c} = (int n dl, int r x n dl), M_s, and
+/// joined by id in the solver): a_{s,c} = (int n dl, int r x n dl), M_s,
 /// V* = V^n + dt M^-1 (F_g + F_coll + F_q) with F_coll the collision loads predicted at level n
-/// and F_q the hydrostatic quadrature load.
+/// and F_q the hydrostatic quadrature load, and F_q of the listed pieces as the load.
 std::vector<fluid::SolidCoupling> solid_couplings(
     const SolidScene& scene, const geometry::CutCells& cut, const fluid::CellStates& cells,
     const grid::Decomposition& d, const std::vector<core::SolidLoads>& collision,
     const QuadratureOptions& quadrature, double dt, const core::Comm& comm);
 
 /// Pressure loads J p + F_q, J p = -sum_c a_{s,c} p_c, on every owned solid of `dem` (summed
-/// over ranks).
-std::vector<core::SolidLoads> fluid_loads(const SolidScene& scene, const geometry::CutCells& cut,
-                                          const fluid::CellStates& cells, const grid::CellField& p,
-                                          const grid::Decomposition& d, const dem::DemSolver& dem,
-                                          const QuadratureOptions& quadrature,
-                                          const core::Comm& comm);
+/// over ranks), from the rows of the last solve of `pressure` (PressureSolver::solid_loads).
+std::vector<core::SolidLoads> fluid_loads(const fluid::PressureSolver& pressure,
+                                          const grid::CellField& p, const dem::DemSolver& dem);
 
 /// Faces closed by a body get its rigid velocity (obstacles: 0) and are marked valid, so that
 /// interpolation next to a solid sees the solid's motion.

@@ -31,6 +31,9 @@ struct SolidCoupling {
   std::vector<std::array<double, 3>> a;   ///< a_{s,c} = (int n_x dl, int n_z dl, int r x n dl)
   double mass = 0.0, inertia = 0.0;       ///< M_s = diag(m, m, I), per unit depth
   std::array<double, 3> v_star{0, 0, 0};  ///< V* = V^n + dt M^-1 (F_g + F_coll)
+  /// A load that does not depend on p, added to J_s p in the loads (the hydrostatic quadrature
+  /// load F_q of the listed pieces); the lists with the same id add theirs.
+  std::array<double, 3> load{0, 0, 0};
 };
 
 struct SolveStats {
@@ -78,14 +81,20 @@ class PressureSolver {
                            const SurfaceFractions* surface = nullptr,
                            const grid::CellField* source = nullptr) const;
 
+  /// The loads J_s p + F_s on every solid of the couplings of the last solve() or assemble(),
+  /// from the same rows a_{s,c} the matrix was assembled from (eq. 6; F_s: SolidCoupling::load);
+  /// the same vector (ordered by id) on every rank. p: the solved pressure (owned cells read).
+  std::vector<core::SolidLoads> solid_loads(const grid::CellField& p) const;
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
 
 /// The pressure force and torque on every solid, J_s p = -sum_c a_{s,c} p_c (eq. 6), summed over
-/// the fluid cells of all ranks; the same vector (ordered by id) on every rank. Couplings are
-/// passed as to PressureSolver::solve; p is the solved pressure.
+/// the fluid cells of all ranks, plus SolidCoupling::load; the same vector (ordered by id) on
+/// every rank. Couplings are passed as to PressureSolver::solve; p is the solved pressure. The
+/// same computation as PressureSolver::solid_loads.
 std::vector<core::SolidLoads> pressure_loads(const std::vector<SolidCoupling>& couplings,
                                              const grid::CellField& p, const CellStates& cells,
                                              const grid::Decomposition& d);
