@@ -41,18 +41,6 @@ void declare_parameters(core::ParamSchema& schema) {
       .positive()
       .less_than(1.0);
   schema.integer("solver/max_iterations", 500, "CG iterations allowed per solve").at_least(1);
-  schema.real("solver/solid_drop_tol", 0.02,
-              "MueLu's \"aggregation: drop tol\" for systems with solids: the weak entries of "
-              "the solids' dense blocks stay out of the aggregation graph, which halves the "
-              "iterations (doc/performance.md); 0 keeps them; one set in solver/MueLu takes "
-              "precedence")
-      .at_least(0.0)
-      .less_than(1.0);
-  schema.integer("solver/solid_eigen_iterations", 30,
-                 "power-iteration steps of the Chebyshev smoother's largest-eigenvalue estimate "
-                 "for systems with solids (the solids' blocks add eigenvalues that 10 steps can "
-                 "miss: doc/performance.md); one set in solver/MueLu takes precedence")
-      .at_least(1);
   schema.boolean("solver/rebalance", true,
                  "split the pressure unknowns evenly over the ranks for the solve (the grid "
                  "blocks hold unequal numbers of fluid cells)");
@@ -75,6 +63,24 @@ void declare_parameters(core::ParamSchema& schema) {
                      "\"repartition: min rows per proc\": 800\n",
                      "settings handed to MueLu::CreateTpetraPreconditioner; cell-centre "
                      "coordinates are added as \"Coordinates\" in \"user data\"");
+  schema.passthrough("solver/MueLu_solids",
+                     "\"aggregation: drop tol\": 0.02\n"
+                     "\"smoother: params\":\n"
+                     "  \"chebyshev: eigenvalue max iterations\": 30\n",
+                     "merged over solver/MueLu for systems with solids: their dense blocks join "
+                     "every cut cell of a body to every other, and aggregated as strong "
+                     "connections they double the iterations (drop tol); they also add large "
+                     "eigenvalues that Chebyshev's 10-step estimate can miss, which made the "
+                     "preconditioner indefinite (doc/performance.md)");
+  schema.passthrough("solver/MueLu_one_level",
+                     "\"coarse: type\": RELAXATION\n"
+                     "\"coarse: params\":\n"
+                     "  \"relaxation: type\": \"Symmetric Gauss-Seidel\"\n"
+                     "  \"relaxation: sweeps\": 2\n",
+                     "merged over the list when a system no larger than \"coarse: max size\" is "
+                     "solved on several ranks: it is then its own coarsest level, which no "
+                     "repartitioning gathers on one rank, and MueLu's distributed direct coarse "
+                     "solve is wrong there (TOOLCHAIN.md)");
 }
 
 FluidConfig config_from(const core::Params& params) {

@@ -7,6 +7,7 @@
 #include <BelosPseudoBlockCGSolMgr.hpp>
 #include <BelosTpetraAdapter.hpp>
 #include <MueLu_CreateTpetraPreconditioner.hpp>
+#include <MueLu_MasterList.hpp>
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_Core.hpp>
 #include <Tpetra_CrsMatrix.hpp>
@@ -43,25 +44,82 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-/// The linear-solver settings read once from the case.
+/// The linear-solver settings read once from the case: the declared lists of solver/Belos and
+/// solver/MueLu, and the lists merged over MueLu's for systems with solids and for systems
+/// solved on one level on several ranks (fluid::declare_parameters declares all four).
 struct SolverSettings {
   double tolerance = 1e-8;
   int max_iterations = 500;
   bool rebalance = true;
-  double solid_drop_tol = 0.02;
-  int solid_eigen_iterations = 30;
-  Teuchos::ParameterList belos, muelu;
+  Teuchos::ParameterList belos, muelu, muelu_solids, muelu_one_level;
 };
+
+/// `over`'s keys merged over `base`. A "smoother: params" sublist belongs to its smoother: the
+/// "chebyshev: ..." keys of the default list are dropped when the merged smoother is not
+/// Chebyshev (Ifpack2 rejects keys of another smoother).
+Teuchos::ParameterList merged(const Teuchos::ParameterList& base,
+                              const Teuchos::ParameterList* over) {
+  Teuchos::ParameterList m = base;
+  if (over) m.setParameters(*over);
+  if (m.isSublist("smoother: params") &&
+      m.get<std::string>("smoother: type", "RELAXATION") != "CHEBYSHEV") {
+    Teuchos::ParameterList& sp = m.sublist("smoother: params");
+    std::vector<std::string> cheb;
+    for (auto it = sp.begin(); it != sp.end(); ++it)
+      if (sp.name(it).rfind("chebyshev: ", 0) == 0) cheb.push_back(sp.name(it));
+    for (const auto& k : cheb) sp.remove(k);
+  }
+  return m;
+}
+
+/// MueLu's list for a system: solver/MueLu, then solver/MueLu_solids if it couples solids, then
+/// solver/MueLu_one_level if it has no coarser level and several ranks.
+Teuchos::ParameterList muelu_list(const SolverSettings& s, bool with_solids, long long unknowns,
+                                  int ranks) {
+  Teuchos::ParameterList m = merged(s.muelu, with_solids ? &s.muelu_solids : nullptr);
+  if (ranks > 1 && unknowns <= m.get<int>("coarse: max size", 2000))
+    m = merged(m, &s.muelu_one_level);
+  return m;
+}
+
+/// Trilinos' own lists of valid parameters check the case's lists before the first solve:
+/// Belos' valid parameters of PseudoBlockCG and MueLu's master list (top level; the smoother and
+/// coarse sublists are checked by Ifpack2/Amesos2 when the hierarchy is built).
+void validate(const SolverSettings& s) {
+  const std::vector<std::pair<const char*, Teuchos::ParameterList>> lists = {
+      {"solver/MueLu", merged(s.muelu, nullptr)},
+      {"solver/MueLu_solids", merged(s.muelu, &s.muelu_solids)},
+      {"solver/MueLu_one_level", merged(s.muelu, &s.muelu_one_level)}};
+  for (const auto& [key, list] : lists) {
+    Teuchos::ParameterList top = list;
+    std::vector<std::string> levels;  // MueLu's "level N" sublists: not in the master list
+    for (auto it = top.begin(); it != top.end(); ++it)
+      if (top.name(it).rfind("level ", 0) == 0) levels.push_back(top.name(it));
+    for (const auto& l : levels) top.remove(l);
+    try {
+      top.validateParameters(*MueLu::MasterList::List(), 0);
+    } catch (const std::exception& e) {
+      throw core::InputError(std::string(key) + ": MueLu rejected the settings: " + e.what());
+    }
+  }
+  try {
+    Belos::PseudoBlockCGSolMgr<double, MV, OP> cg;
+    s.belos.validateParameters(*cg.getValidParameters(), 0);
+  } catch (const std::exception& e) {
+    throw core::InputError(std::string("solver/Belos: Belos rejected the settings: ") + e.what());
+  }
+}
 
 SolverSettings settings_from(const core::Params& params) {
   SolverSettings s;
   s.tolerance = params.real("solver/tolerance");
   s.max_iterations = static_cast<int>(params.integer("solver/max_iterations"));
   s.rebalance = params.boolean("solver/rebalance");
-  s.solid_drop_tol = params.real("solver/solid_drop_tol");
-  s.solid_eigen_iterations = static_cast<int>(params.integer("solver/solid_eigen_iterations"));
   s.belos = params.teuchos("solver/Belos");
   s.muelu = params.teuchos("solver/MueLu");
+  s.muelu_solids = params.teuchos("solver/MueLu_solids");
+  s.muelu_one_level = params.teuchos("solver/MueLu_one_level");
+  validate(s);
   return s;
 }
 
@@ -432,36 +490,7 @@ SolveStats run_solver(const grid::Decomposition& d, const SolverSettings& settin
       xv[r] = rows.x[r], bv[r] = rows.rhs[r], cx[r] = rows.cx[r], cz[r] = rows.cz[r];
   }
 
-  Teuchos::ParameterList muelu = settings.muelu;
-  // The solids' dense blocks join every cut cell of a body to every other: aggregated as strong
-  // connections they double the iterations (doc/performance.md). solver/solid_drop_tol > 0 leaves
-  // weak ones out of the aggregation graph unless the case sets its own drop tolerance.
-  if (sys.with_solids && settings.solid_drop_tol > 0.0 &&
-      !muelu.isParameter("aggregation: drop tol"))
-    muelu.set("aggregation: drop tol", settings.solid_drop_tol);
-  // The same blocks give D^-1 A a few large eigenvalues whose eigenvectors live on the cut cells
-  // of one body. Chebyshev's power iteration (10 steps by default) can miss them; a smoother
-  // built on too small a largest eigenvalue amplifies those modes and the V-cycle is no longer
-  // positive definite (CG stops with alpha <= 0; doc/performance.md).
-  if (sys.with_solids && muelu.get<std::string>("smoother: type", "RELAXATION") == "CHEBYSHEV" &&
-      !muelu.sublist("smoother: params").isParameter("chebyshev: eigenvalue max iterations"))
-    muelu.sublist("smoother: params")
-        .set("chebyshev: eigenvalue max iterations", settings.solid_eigen_iterations);
-  // A system no larger than the coarse size is its own coarsest level, which no repartitioning
-  // gathers onto one rank: there the distributed direct coarse solve is wrong (TOOLCHAIN.md),
-  // so such small systems on several ranks are smoothed by symmetric Gauss-Seidel instead.
-  const int coarse_max = muelu.get<int>("coarse: max size", 2000);
-  if (comm.size() > 1 && stats.unknowns <= coarse_max) {
-    muelu.set("coarse: type", std::string("RELAXATION"));
-    Teuchos::ParameterList& cp = muelu.sublist("coarse: params");
-    cp.set("relaxation: type", std::string("Symmetric Gauss-Seidel"));
-    cp.set("relaxation: sweeps", 2);
-  }
-  // The default "smoother: params" carry a Chebyshev degree; a case that switches the smoother
-  // type keeps them through the merge, and Ifpack2 rejects unknown keys.
-  if (muelu.isSublist("smoother: params") &&
-      muelu.get<std::string>("smoother: type", "RELAXATION") != "CHEBYSHEV")
-    muelu.sublist("smoother: params").remove("chebyshev: degree", false);
+  Teuchos::ParameterList muelu = muelu_list(settings, sys.with_solids, stats.unknowns, comm.size());
   muelu.sublist("user data").set("Coordinates", coords);
   RCP<OP> prec;
   {

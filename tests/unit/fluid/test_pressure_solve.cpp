@@ -216,6 +216,33 @@ TEST(PressureSolve, RejectedMueLuSettingsNameTheKey) {
   }
 }
 
+// Trilinos' lists of valid parameters check the case's solver lists when the solver is built:
+// a misspelt MueLu or Belos key is an InputError naming the case key and the misspelt name.
+TEST(PressureSolve, UnknownSolverKeysAreRejectedByTrilinosValidators) {
+  core::Comm comm;
+  const GridSpec s = spec_from(fluid_test::tank_params(1.0, 1.0, 1.0 / 16));
+  Decomposition d(s, comm, 1);
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {"solver/MueLu={\"smoother: tpye\": CHEBYSHEV}", "smoother: tpye"},
+      {"solver/MueLu_solids={\"aggregation: drop tolerance\": 0.02}",
+       "aggregation: drop tolerance"},
+      {"solver/MueLu={\"coarse: max size\": 800.5}", "coarse: max size"},
+      {"solver/Belos={\"Verbosty\": 0}", "Verbosty"}};
+  for (const auto& [setting, name] : bad) {
+    const auto params = fluid_test::tank_params(1.0, 1.0, 1.0 / 16, {setting});
+    const std::string key = setting.substr(0, setting.find('='));
+    try {
+      fluid::PressureSolver solver(d, params);
+      ADD_FAILURE() << setting << " accepted";
+    } catch (const core::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(key + ":"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+    }
+  }
+  // The declared defaults pass.
+  EXPECT_NO_THROW(fluid::PressureSolver(d, fluid_test::tank_params(1.0, 1.0, 1.0 / 16)));
+}
+
 // Sub-cell free surface at z_s = 20.3 h (level set phi = z - z_s): the ghost-fluid Dirichlet
 // condition makes the hydrostatic pressure exact at every cell centre, p = rho g (z_s - z_c),
 // including the top fluid row (theta = 0.8), and the projected water stays at rest.
