@@ -45,6 +45,33 @@ Vec2 wall_normal(int side) {
   return n[side];
 }
 
+/// Step (1) of eqs. 21-25: U_0 = U^n + (M^-1 F_fluid + g) dt, X_0 = X^n; keeps U^n in v_start,
+/// omega_start. `fluid_loads` in any order, any subset of the solids.
+void kick(std::vector<SolidLoads> loads, const Vec2 gravity, double dt,
+          std::vector<SolidState>& owned, std::vector<Vec2>& v_start,
+          std::vector<double>& omega_start) {
+  std::sort(loads.begin(), loads.end(),
+            [](const SolidLoads& a, const SolidLoads& b) { return a.id < b.id; });
+  for (std::size_t i = 0; i < owned.size(); ++i) {
+    SolidState& s = owned[i];
+    v_start[i] = s.v;
+    omega_start[i] = s.omega;
+    Vec2 F{};
+    double T = 0.0;
+    auto it = std::lower_bound(loads.begin(), loads.end(), s.id,
+                               [](const SolidLoads& l, std::int64_t v) { return l.id < v; });
+    if (it != loads.end() && it->id == s.id) F = it->force, T = it->torque;
+    s.v += (F / s.mass + gravity) * dt;
+    s.omega += T / s.inertia * dt;
+  }
+}
+
+/// Eqs. 22 and 24: X = X_{k-1} + (v0 + U) / 2 dt_DEM, v0 = U^n (paper) or U_{k-1}.
+void step_position(SolidState& s, const SolidState& p, const Vec2 v0, double w0, double h) {
+  s.x = p.x + (0.5 * h) * (v0 + s.v);
+  s.theta = p.theta + 0.5 * h * (w0 + s.omega);
+}
+
 }  // namespace
 
 DemSolver::DemSolver(core::Comm comm, DemConfig config, std::vector<core::Box2> regions,
@@ -295,22 +322,17 @@ void DemSolver::collision_forces(double dt_t, Stage& out, std::vector<Springs>* 
         contacts->push_back({s.id, other_id, kin.point, kin.normal, kin.delta});
     };
     ContactKinematics kin;
-    for (int side = 0; side < 4; ++side) {
-      if (!wall_pair(s, side, kin)) continue;
-      const std::int64_t key = wall_key(side);
+    // a tank wall or an obstacle (fixed, infinite mass) in contact with s
+    auto against_fixed = [&](std::int64_t key) {
       const auto coef = law.coefficients(s.mass, kFixedMass);
       const auto cf = law.force(coef, kin, motion_of(s), fixed,
                                 accumulated ? spring_of(springs_[i], key) : 0.0, dt_t);
       add(kin, kin.arm_a, cf.force, key, cf.spring, -1, true);
-    }
-    for (std::size_t o = 0; o < obstacles_.size(); ++o) {
-      if (!obstacle_pair(s, o, kin)) continue;
-      const std::int64_t key = obstacle_key(o);
-      const auto coef = law.coefficients(s.mass, kFixedMass);
-      const auto cf = law.force(coef, kin, motion_of(s), fixed,
-                                accumulated ? spring_of(springs_[i], key) : 0.0, dt_t);
-      add(kin, kin.arm_a, cf.force, key, cf.spring, -1, true);
-    }
+    };
+    for (int side = 0; side < 4; ++side)
+      if (wall_pair(s, side, kin)) against_fixed(wall_key(side));
+    for (std::size_t o = 0; o < obstacles_.size(); ++o)
+      if (obstacle_pair(s, o, kin)) against_fixed(obstacle_key(o));
     for (int n = nbr_start_[i]; n < nbr_start_[i + 1]; ++n) {
       const int j = nbr_[static_cast<std::size_t>(n)];
       const SolidState& p = j < static_cast<int>(n_owned)
@@ -363,22 +385,8 @@ void DemSolver::advance(double dt, const std::vector<SolidLoads>& fluid_loads) {
   const double h = dt / K;
   last_subcycles_ = K;
 
-  std::vector<SolidLoads> loads = fluid_loads;
-  std::sort(loads.begin(), loads.end(),
-            [](const SolidLoads& a, const SolidLoads& b) { return a.id < b.id; });
   // step (1): U_0 = U^n + (M^-1 F_fluid + g) dt, X_0 = X^n
-  for (std::size_t i = 0; i < owned_.size(); ++i) {
-    SolidState& s = owned_[i];
-    v_start_[i] = s.v;
-    omega_start_[i] = s.omega;
-    Vec2 F{};
-    double T = 0.0;
-    auto it = std::lower_bound(loads.begin(), loads.end(), s.id,
-                               [](const SolidLoads& l, std::int64_t v) { return l.id < v; });
-    if (it != loads.end() && it->id == s.id) F = it->force, T = it->torque;
-    s.v += (F / s.mass + cfg_.gravity) * dt;
-    s.omega += T / s.inertia * dt;
-  }
+  kick(fluid_loads, cfg_.gravity, dt, owned_, v_start_, omega_start_);
   forward();
 
   const bool paper = cfg_.position_update == PositionUpdate::StepStart;
@@ -395,10 +403,7 @@ void DemSolver::advance(double dt, const std::vector<SolidLoads>& fluid_loads) {
       s.v = p.v + (h / s.mass) * a.force[i];
       s.omega = p.omega + (h / s.inertia) * a.torque[i];
       // eq. 22: X_a = X_{k-1} + (U^n + U_a) / 2 dt_DEM
-      const Vec2 v0 = paper ? v_start_[i] : p.v;
-      const double w0 = paper ? omega_start_[i] : p.omega;
-      s.x = p.x + (0.5 * h) * (v0 + s.v);
-      s.theta = p.theta + 0.5 * h * (w0 + s.omega);
+      step_position(s, p, paper ? v_start_[i] : p.v, paper ? omega_start_[i] : p.omega, h);
     }
     forward();
     collision_forces(h, b, &new_springs, nullptr);
@@ -409,10 +414,7 @@ void DemSolver::advance(double dt, const std::vector<SolidLoads>& fluid_loads) {
       s.v = p.v + (0.5 * h / s.mass) * (a.force[i] + b.force[i]);
       s.omega = p.omega + (0.5 * h / s.inertia) * (a.torque[i] + b.torque[i]);
       // eq. 24: X_k = X_{k-1} + (U^n + U_k) / 2 dt_DEM
-      const Vec2 v0 = paper ? v_start_[i] : p.v;
-      const double w0 = paper ? omega_start_[i] : p.omega;
-      s.x = p.x + (0.5 * h) * (v0 + s.v);
-      s.theta = p.theta + 0.5 * h * (w0 + s.omega);
+      step_position(s, p, paper ? v_start_[i] : p.v, paper ? omega_start_[i] : p.omega, h);
     }
     if (cfg_.tangential == TangentialModel::Accumulated) springs_.swap(new_springs);
     forward();

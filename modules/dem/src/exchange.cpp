@@ -188,6 +188,58 @@ void DemSolver::forward() {
   }
 }
 
+namespace {
+
+/// Solids sorted into square cells of at least `cell` over their bounding box (the cell grows
+/// while there are more than 4 cells per solid + 64), by a counting sort.
+struct CellList {
+  Vec2 lo;
+  double cell = 0.0;
+  long long nx = 0, nz = 0;
+  std::vector<int> start, order;  // solids of cell c: order[start[c] .. start[c + 1])
+
+  void cell_of(const Vec2& x, long long& ci, long long& ck) const {
+    ci = std::min(nx - 1, static_cast<long long>((x.x - lo.x) / cell));
+    ck = std::min(nz - 1, static_cast<long long>((x.z - lo.z) / cell));
+  }
+};
+
+template <class At>
+CellList make_cell_list(const At& at, std::size_t n_all, double cell) {
+  CellList cl;
+  Vec2 lo = at(0).x, hi = at(0).x;
+  for (std::size_t j = 1; j < n_all; ++j) {
+    lo = {std::min(lo.x, at(j).x.x), std::min(lo.z, at(j).x.z)};
+    hi = {std::max(hi.x, at(j).x.x), std::max(hi.z, at(j).x.z)};
+  }
+  long long nx = static_cast<long long>((hi.x - lo.x) / cell) + 1;
+  long long nz = static_cast<long long>((hi.z - lo.z) / cell) + 1;
+  while (nx * nz > 4 * static_cast<long long>(n_all) + 64) {
+    cell *= 2.0;
+    nx = static_cast<long long>((hi.x - lo.x) / cell) + 1;
+    nz = static_cast<long long>((hi.z - lo.z) / cell) + 1;
+  }
+  cl.lo = lo, cl.cell = cell, cl.nx = nx, cl.nz = nz;
+  // counting sort of the solids into cells
+  cl.start.assign(static_cast<std::size_t>(nx * nz + 1), 0);
+  cl.order.resize(n_all);
+  std::vector<long long> cell_id(n_all);
+  for (std::size_t j = 0; j < n_all; ++j) {
+    long long ci, ck;
+    cl.cell_of(at(j).x, ci, ck);
+    cell_id[j] = ck * nx + ci;
+    ++cl.start[static_cast<std::size_t>(cell_id[j]) + 1];
+  }
+  std::partial_sum(cl.start.begin(), cl.start.end(), cl.start.begin());
+  std::vector<int> fill(cl.start.begin(), cl.start.end() - 1);
+  for (std::size_t j = 0; j < n_all; ++j)
+    cl.order[static_cast<std::size_t>(fill[static_cast<std::size_t>(cell_id[j])]++)] =
+        static_cast<int>(j);
+  return cl;
+}
+
+}  // namespace
+
 // Cell list over owned + ghost solids; partners of each owned solid within contact reach plus
 // the skin, sorted by global id (the summation order of eqs. 16-17).
 void DemSolver::build_neighbours() {
@@ -199,51 +251,20 @@ void DemSolver::build_neighbours() {
   nbr_start_.assign(n_owned + 1, 0);
   nbr_.clear();
   if (n_all == 0) return;
-  Vec2 lo = at(0).x, hi = at(0).x;
-  for (std::size_t j = 1; j < n_all; ++j) {
-    lo = {std::min(lo.x, at(j).x.x), std::min(lo.z, at(j).x.z)};
-    hi = {std::max(hi.x, at(j).x.x), std::max(hi.z, at(j).x.z)};
-  }
   const double extra = cfg_.gap() + skin_;
-  double cell = 2.0 * max_radius_ + extra;
-  long long nx = static_cast<long long>((hi.x - lo.x) / cell) + 1;
-  long long nz = static_cast<long long>((hi.z - lo.z) / cell) + 1;
-  while (nx * nz > 4 * static_cast<long long>(n_all) + 64) {
-    cell *= 2.0;
-    nx = static_cast<long long>((hi.x - lo.x) / cell) + 1;
-    nz = static_cast<long long>((hi.z - lo.z) / cell) + 1;
-  }
-  auto cell_of = [&](const Vec2& x, long long& ci, long long& ck) {
-    ci = std::min(nx - 1, static_cast<long long>((x.x - lo.x) / cell));
-    ck = std::min(nz - 1, static_cast<long long>((x.z - lo.z) / cell));
-  };
-  // counting sort of the solids into cells
-  std::vector<int> start(static_cast<std::size_t>(nx * nz + 1), 0), order(n_all);
-  std::vector<long long> cell_id(n_all);
-  for (std::size_t j = 0; j < n_all; ++j) {
-    long long ci, ck;
-    cell_of(at(j).x, ci, ck);
-    cell_id[j] = ck * nx + ci;
-    ++start[static_cast<std::size_t>(cell_id[j]) + 1];
-  }
-  std::partial_sum(start.begin(), start.end(), start.begin());
-  std::vector<int> fill(start.begin(), start.end() - 1);
-  for (std::size_t j = 0; j < n_all; ++j)
-    order[static_cast<std::size_t>(fill[static_cast<std::size_t>(cell_id[j])]++)] =
-        static_cast<int>(j);
-
+  const CellList cl = make_cell_list(at, n_all, 2.0 * max_radius_ + extra);
   std::vector<std::pair<std::int64_t, int>> cand;
   for (std::size_t i = 0; i < n_owned; ++i) {
     const SolidState& s = owned_[i];
     const double Ri = shapes_[static_cast<std::size_t>(s.shape)].radius;
     long long ci, ck;
-    cell_of(s.x, ci, ck);
+    cl.cell_of(s.x, ci, ck);
     cand.clear();
-    for (long long k = std::max(0LL, ck - 1); k <= std::min(nz - 1, ck + 1); ++k)
-      for (long long c = std::max(0LL, ci - 1); c <= std::min(nx - 1, ci + 1); ++c) {
-        const auto cid = static_cast<std::size_t>(k * nx + c);
-        for (int q = start[cid]; q < start[cid + 1]; ++q) {
-          const auto j = static_cast<std::size_t>(order[static_cast<std::size_t>(q)]);
+    for (long long k = std::max(0LL, ck - 1); k <= std::min(cl.nz - 1, ck + 1); ++k)
+      for (long long c = std::max(0LL, ci - 1); c <= std::min(cl.nx - 1, ci + 1); ++c) {
+        const auto cid = static_cast<std::size_t>(k * cl.nx + c);
+        for (int q = cl.start[cid]; q < cl.start[cid + 1]; ++q) {
+          const auto j = static_cast<std::size_t>(cl.order[static_cast<std::size_t>(q)]);
           if (j == i) continue;
           const SolidState& p = at(j);
           const double Rj = shapes_[static_cast<std::size_t>(p.shape)].radius;
