@@ -516,6 +516,7 @@ void record_diagnostics(SimulationState& s, double dt) {
   g.t = s.t, g.dt = dt, g.step = s.step;
   g.ppe_iterations = s.last_solve.iterations;
   g.ppe_residual = s.last_solve.relative_residual;
+  g.ppe_structure_reused = s.last_solve.reused_structure;
   double ke = 0.0, front = -std::numeric_limits<double>::infinity(), vmax = 0.0;
   bool finite = true;
   const auto& P = s.particles;

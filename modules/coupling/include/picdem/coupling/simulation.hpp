@@ -23,6 +23,7 @@ struct Diagnostics {
   double kinetic_energy = 0.0;  ///< fluid, from the particles, per unit depth [J/m]
   int ppe_iterations = 0;
   double ppe_residual = 0.0;
+  bool ppe_structure_reused = false;  ///< pressure solve kept its Tpetra structure (not in csv)
   double front_x = 0.0;  ///< largest x of any fluid particle, from the left wall [m]
   long long particles = 0;
   double max_speed = 0.0;

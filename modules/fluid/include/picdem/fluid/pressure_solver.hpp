@@ -7,8 +7,10 @@
 // neighbour (air neighbours: p = 0; solid neighbours and closed faces: E = 0). A_s has one row
 // a_{s,c} per cut cell c of solid s; M_s = diag(m, m, I); V* = V^n + dt M^-1 (F_g + F_coll).
 // Unknowns are the owned fluid cells, numbered by their global cell id k nx + i. The matrix is a
-// Tpetra::CrsMatrix assembled every step; Belos CG preconditioned by MueLu solves it starting
-// from the previous pressure. Tpetra, Belos and MueLu stay inside pressure_solver.cpp.
+// Tpetra::CrsMatrix whose structure (maps, graph, Export) is kept while the fluid mask and the
+// couplings' cells are unchanged (values refilled); the solids' term is a separate piece
+// (src/coupling_term.hpp). Belos CG preconditioned by MueLu (a new hierarchy every solve) solves
+// it starting from the previous pressure. Tpetra, Belos and MueLu stay inside src/.
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -42,6 +44,7 @@ struct SolveStats {
   double setup_seconds = 0.0;      ///< assembly + MueLu setup
   double solve_seconds = 0.0;      ///< Belos iterations
   long long unknowns = 0;          ///< global number of fluid cells
+  bool reused_structure = false;   ///< the Tpetra structure of the last solve was reused
 };
 
 /// The assembled system in plain arrays (for tests and diagnostics): rows are this rank's owned

@@ -1,0 +1,39 @@
+#pragma once
+// The pressure system of one rank as the assembly produces it, before it goes to Tpetra (private
+// to the fluid module): the fluid part -L_E, D (eqs. 3, 5) and the plain-array form for tests.
+#include <vector>
+
+#include "picdem/fluid/fluid.hpp"
+#include "picdem/fluid/pressure_solver.hpp"
+#include "picdem/grid/field.hpp"
+
+namespace picdem::fluid::detail {
+
+/// Rows are this rank's owned fluid cells; every matrix entry is a contribution (row, column cell
+/// id, value) in a fixed order, so that duplicates are always summed in the same order, whether
+/// the Tpetra structure is rebuilt or reused (bitwise restarts).
+struct RowContributions {
+  std::vector<long long> cells;  ///< row r: the owned fluid cell k nx + i (k-major order)
+  std::vector<int> row;          ///< per contribution: its row
+  std::vector<long long> col;    ///< per contribution: the cell id of its column
+  std::vector<double> val;       ///< per contribution: its value
+  std::vector<double> rhs;       ///< per row
+  bool with_solids = false;      ///< solid couplings entered (solver/MueLu_solids applies)
+
+  void add(int r, long long c, double v) { row.push_back(r), col.push_back(c), val.push_back(v); }
+};
+
+/// -L_E and b = -D(u~) (+ source) of the owned fluid cells into `rows` (cleared first): per row
+/// its fluid neighbours in face order, then the diagonal (eqs. 3, 5). row_of: the row of every
+/// owned fluid cell, -1 elsewhere.
+void fluid_rows(const CellStates& cells, const Apertures& E, const grid::FaceField& u,
+                const grid::FaceField& w, double dt, const FluidConfig& cfg,
+                const SurfaceFractions* surface, const grid::CellField* source,
+                const grid::Decomposition& d, RowContributions& rows, grid::GridArray<int>& row_of);
+
+/// The plain-array form: per row (column, value) sorted by column, duplicates summed.
+AssembledSystem assembled(const RowContributions& rows);
+/// Contributions of a system in plain-array form (solve_system).
+RowContributions contributions(const AssembledSystem& sys);
+
+}  // namespace picdem::fluid::detail

@@ -1,0 +1,73 @@
+#pragma once
+// The pressure system in Tpetra, kept between solves (private to the fluid module; included only
+// by tpetra_system.cpp and pressure_solver.cpp).
+//
+// Every rank assembles the rows of its owned fluid cells, numbered contiguously over the ranks
+// (rank offset + local index), into a CrsMatrix S on that "assembly" map, built from local CSR
+// arrays with a prepared column map (own columns, then the others sorted) and
+// expertStaticFillComplete. With solver/rebalance on several ranks the rows are solved on an even
+// split of the same numbering (the "solve" map): the rows a rank assembled but does not own there
+// are sent with one Export and ADD into the matrix A on the solve map (the rows it keeps are
+// copied locally by the same Export); otherwise A is S. Maps, graphs, the Export, the column
+// positions of every contribution and the vectors are kept while the structure (rows and the
+// columns of every contribution, on every rank) is unchanged: a solve then only refills values.
+#include <Teuchos_DefaultMpiComm.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Export.hpp>
+#include <Tpetra_Map.hpp>
+#include <Tpetra_MultiVector.hpp>
+
+#include <vector>
+
+#include "picdem/grid/field.hpp"
+#include "pressure_rows.hpp"
+
+namespace picdem::fluid::detail {
+
+class TpetraSystem {
+ public:
+  using Map = Tpetra::Map<>;
+  using Matrix = Tpetra::CrsMatrix<>;
+  using Graph = Tpetra::CrsGraph<>;
+  using MV = Tpetra::MultiVector<>;
+  using LO = Map::local_ordinal_type;
+  using GO = Map::global_ordinal_type;
+
+  /// Takes this solve's rows and initial guess x0 (one per row). Rebuilds the structure when it
+  /// differs from the last load on any rank, else refills the values only; returns true when the
+  /// structure was reused. Collective.
+  bool load(const RowContributions& rows, const std::vector<double>& x0,
+            const grid::Decomposition& d, bool rebalance);
+
+  const Teuchos::RCP<Matrix>& matrix() const { return A_; }
+  const Teuchos::RCP<MV>& x() const { return X_; }
+  const Teuchos::RCP<MV>& b() const { return B_; }
+  const Teuchos::RCP<MV>& coordinates() const { return coords_; }
+  /// The solution of x(), one value per row of the last load (this rank's rows).
+  std::vector<double> solution() const;
+
+ private:
+  bool same_structure(const RowContributions& rows, const core::Comm& comm, bool rebalance) const;
+  void rebuild(const RowContributions& rows, const grid::Decomposition& d, bool rebalance);
+  std::vector<GO> column_gids(const RowContributions& rows, const grid::Decomposition& d) const;
+  void build_source(const RowContributions& rows, const std::vector<GO>& col_gid);
+  void build_solve_side(const RowContributions& rows, const grid::Decomposition& d, bool rebalance);
+  void fill_values(const RowContributions& rows);
+  void fill_vectors(const RowContributions& rows, const std::vector<double>& x0);
+
+  bool built_ = false, rebalance_ = false;
+  std::vector<long long> key_cells_, key_col_;  // the structure of the last rebuild
+  std::vector<int> key_row_;
+  long long offset_ = 0;
+  Teuchos::RCP<const Teuchos::Comm<int>> tcomm_;
+  Teuchos::RCP<const Map> asm_map_, solve_map_;
+  Teuchos::RCP<Matrix> S_, A_;
+  Teuchos::RCP<Tpetra::Export<>> export_;
+  Teuchos::ArrayRCP<std::size_t> row_ptr_;
+  Teuchos::ArrayRCP<LO> col_idx_;
+  std::vector<std::size_t> pos_;  // per contribution: its slot in the CSR values of S
+  std::vector<double> values_;    // CSR values of S
+  Teuchos::RCP<MV> X_, B_, coords_, X_asm_, B_asm_;
+};
+
+}  // namespace picdem::fluid::detail
