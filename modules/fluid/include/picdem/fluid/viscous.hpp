@@ -1,0 +1,114 @@
+#pragma once
+// Viscous operator on the staggered grid that sees solids, obstacles and walls at their true
+// (cut) position, its implicit (backward Euler) solve, and the viscous loads on each body from
+// the same discrete stresses (doc/viscous.md; equations at the top of viscous_operator.cpp).
+//
+// Each velocity component is treated on its own (the vector Laplacian of a constant-viscosity
+// incompressible fluid is component-wise). The stencil is built over the whole grid on every rank
+// (replicated): this first version is for runs and tests on one rank; distributing the rows over
+// the decomposition is left for the hook into the step (doc/viscous.md).
+#include <array>
+#include <functional>
+#include <vector>
+
+#include "picdem/core/vec2.hpp"
+
+namespace picdem::fluid {
+
+/// A rigid body as the viscous operator sees it: a point-inside test (true inside or on the
+/// boundary) and the rigid velocity V + omega x (x - centre) that is the no-slip boundary value.
+/// Fixed obstacles: velocity 0, omega 0. `area` (the body's area) is needed for the torque of a
+/// rotating body (viscous_loads).
+struct ViscousBody {
+  std::function<bool(const core::Vec2&)> inside;
+  core::Vec2 velocity;
+  double omega = 0.0;
+  core::Vec2 centre;
+  double area = 0.0;
+  core::Vec2 velocity_at(const core::Vec2& x) const {
+    return {velocity.x - omega * (x.z - centre.z), velocity.z + omega * (x.x - centre.x)};
+  }
+};
+
+/// The tank walls (all four alike): no-slip (0), free-slip (normal 0, zero tangential gradient)
+/// or a prescribed velocity (a function of the wall point; used for exact-solution boundaries).
+enum class WallKind { NoSlip, FreeSlip, Prescribed };
+struct ViscousWalls {
+  WallKind kind = WallKind::NoSlip;
+  std::function<core::Vec2(const core::Vec2&)> velocity;  ///< for Prescribed
+};
+
+/// The tank: cells of size h, nx x nz, lower-left corner at origin.
+struct ViscousGrid {
+  core::Vec2 origin;
+  double h = 0.0;
+  int nx = 0, nz = 0;
+};
+
+/// A boundary leg: the grid line from an unknown towards a neighbour crosses a body or wall at
+/// the fraction theta of h; the flux through it is weight (value - u) with weight = 1 / theta.
+struct ViscousLeg {
+  int unknown = 0;
+  int body = -1;  ///< index into the bodies, -1 for the tank walls
+  double weight = 0.0;
+  double value = 0.0;  ///< the boundary velocity component at the crossing point
+  core::Vec2 point;    ///< the crossing point
+};
+
+/// The stencil of one velocity component. Nodes: component 0 (u) at x-faces (i in [0, nx],
+/// k in [0, nz)), component 1 (w) at z-faces (i in [0, nx), k in [0, nz]); node id i + ni k.
+/// h^2 (L u)_r = sum_{neighbours n} u_n - diag_r u_r + sum_{legs of r} weight value.
+struct ViscousStencil {
+  int component = 0;
+  int ni = 0, nk = 0;
+  double h = 0.0;
+  std::vector<int> unknown_of;  ///< per node: unknown number, -1 for nodes that are not unknowns
+  std::vector<int> node_of;     ///< per unknown: node id
+  std::vector<double> diag;     ///< per unknown: sum of the weights of its legs (1 interior)
+  std::vector<std::array<int, 4>> neighbours;  ///< per unknown: unknown numbers, -1 none
+  std::vector<ViscousLeg> legs;
+  /// Position of node id n.
+  core::Vec2 position(int node, const ViscousGrid& g) const;
+};
+
+/// Below this fraction of h a crossing is moved to theta_min h (bounds the weight 1/theta).
+constexpr double kViscousThetaMin = 1e-3;
+
+/// Builds the stencil of `component` (0: u, 1: w). A node is an unknown when it is strictly
+/// inside the tank (for the wall-normal component) and outside every body.
+ViscousStencil build_viscous_stencil(int component, const ViscousGrid& g,
+                                     const std::vector<ViscousBody>& bodies,
+                                     const ViscousWalls& walls);
+
+/// (L u) per node (0 on nodes that are not unknowns): the explicit operator, u per node.
+std::vector<double> apply_viscous_operator(const ViscousStencil& s, const std::vector<double>& u);
+
+/// Backward Euler for one component: (u_new - u_old)/dt = nu L u_new + f, with f per node
+/// [m/s^2]; dt = infinity gives the steady problem -nu L u = f. u holds u_old on entry (and the
+/// initial guess), u_new on return; nodes that are not unknowns are left unchanged. Solved with
+/// Belos CG preconditioned with MueLu (the matrix is symmetric positive definite) to the relative
+/// true residual `tolerance`; throws core::SolverError if it is not reached. Returns iterations.
+int solve_viscous_implicit(const ViscousStencil& s, double nu, double dt,
+                           const std::vector<double>& f, std::vector<double>& u,
+                           double tolerance = 1e-12);
+
+/// Viscous force [N/m] and torque [N m/m] on each body (about its centre) and the force on the
+/// tank walls, from the boundary legs: the fluid at a leg gains mu weight (value - u) per unit
+/// time and depth, the body loses it. These fluxes are those of the Laplacian form mu grad u; the
+/// true stress mu (grad u + grad u^T) differs by mu (grad u)^T n, which on a rigid body's surface
+/// (divergence-free fluid) is its rigid motion's, omega (n_z, -n_x): no net force, and the torque
+/// -2 mu omega area, added to each body's torque (doc/viscous.md).
+struct ViscousLoads {
+  std::vector<core::Vec2> force;
+  std::vector<double> torque;
+  core::Vec2 wall_force;
+};
+ViscousLoads viscous_loads(const ViscousStencil& su, const ViscousStencil& sw,
+                           const std::vector<double>& u, const std::vector<double>& w, double mu,
+                           const std::vector<ViscousBody>& bodies);
+
+/// Stability limit of explicit viscosity on a uniform grid: dt <= h^2 / (4 nu) (infinity for
+/// nu = 0).
+double viscous_time_step(double h, double nu);
+
+}  // namespace picdem::fluid
