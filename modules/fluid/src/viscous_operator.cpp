@@ -20,8 +20,9 @@
 // time and depth mu (u_B - u_P) / theta through a boundary leg and mu (u_N - u_P) through an
 // interior leg; interior legs cancel in pairs, so the momentum the fluid gains equals minus the
 // sum of the loads given to the bodies and walls (viscous_loads) to round-off.
-// Not seen by this version: a body thinner than h between two fluid nodes (the leg does not test
-// the segment between them), the free surface (every node in the tank is fluid).
+// Free surface: nodes outside the caller's fluid mask are not unknowns and legs to them are
+// dropped (zero gradient at the midpoint). Not seen by this version: a body thinner than h
+// between two fluid nodes (the leg does not test the segment between them).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -113,11 +114,16 @@ Vec2 ViscousStencil::position(int node, const ViscousGrid& g) const {
 
 ViscousStencil build_viscous_stencil(int component, const ViscousGrid& g,
                                      const std::vector<ViscousBody>& bodies,
-                                     const ViscousWalls& walls) {
+                                     const ViscousWalls& walls,
+                                     const std::vector<unsigned char>* fluid_nodes) {
   if (!(g.h > 0.0) || g.nx < 1 || g.nz < 1)
     throw core::InputError("viscous stencil: the grid needs h > 0 and at least one cell");
   if (walls.kind == WallKind::Prescribed && !walls.velocity)
     throw core::InputError("viscous stencil: prescribed walls need a velocity function");
+  const std::size_t nodes = component == 0 ? std::size_t(g.nx + 1) * std::size_t(g.nz)
+                                           : std::size_t(g.nx) * std::size_t(g.nz + 1);
+  if (fluid_nodes && fluid_nodes->size() != nodes)
+    throw core::InputError("viscous stencil: the fluid-node mask needs one value per node");
   ViscousStencil s;
   s.component = component;
   s.h = g.h;
@@ -128,7 +134,9 @@ ViscousStencil build_viscous_stencil(int component, const ViscousGrid& g,
     for (int i = 0; i < s.ni; ++i) {
       const bool on_wall = component == 0 ? (i == 0 || i == g.nx) : (k == 0 || k == g.nz);
       const int n = i + s.ni * k;
-      if (on_wall || any_inside(s.position(n, g), bodies)) continue;
+      if (on_wall || (fluid_nodes && !(*fluid_nodes)[static_cast<std::size_t>(n)]) ||
+          any_inside(s.position(n, g), bodies))
+        continue;
       s.unknown_of[static_cast<std::size_t>(n)] = static_cast<int>(s.node_of.size());
       s.node_of.push_back(n);
     }

@@ -1,8 +1,10 @@
-// Implicit viscosity (viscous.hpp): backward Euler for one velocity component,
-//   (u_new - u_old) / dt = nu L u_new + f,
+// Implicit viscosity (viscous.hpp), the theta scheme for one velocity component
+// (beta = 1 backward Euler, 1/2 Crank-Nicolson; theta below is a leg's boundary fraction):
+//   (u_new - u_old) / dt = nu L (beta u_new + (1 - beta) u_old) + f,
 // multiplied by h^2 / nu (alpha = h^2 / (nu dt), 0 for the steady problem):
-//   (alpha + diag_P) u_P - sum_{interior legs} u_N = alpha u_old,P + h^2 f_P / nu
-//                                                    + sum_{boundary legs} u_B / theta,
+//   (alpha + beta diag_P) u_P - beta sum_{interior legs} u_N
+//     = alpha u_old,P + h^2 f_P / nu + beta sum_{boundary legs} u_B / theta
+//       + (1 - beta) h^2 (L u_old)_P,
 // a symmetric positive definite matrix (an M-matrix, strictly diagonally dominant on rows with a
 // boundary leg or alpha > 0), solved with Belos CG preconditioned with MueLu (smoothed
 // aggregation, its defaults). One of the few files that include Tpetra, Belos and MueLu.
@@ -33,18 +35,19 @@ using MV = Tpetra::MultiVector<>;
 using OP = Tpetra::Operator<>;
 using GO = Map::global_ordinal_type;
 
-/// The matrix alpha I + A of the stencil on a map of all unknowns (this rank alone).
-RCP<Matrix> assemble(const ViscousStencil& s, double alpha, const RCP<const Map>& map) {
+/// The matrix alpha I + beta A of the stencil on a map of all unknowns (this rank alone).
+RCP<Matrix> assemble(const ViscousStencil& s, double alpha, double beta,
+                     const RCP<const Map>& map) {
   auto A = rcp(new Matrix(map, 5));
   for (std::size_t r = 0; r < s.node_of.size(); ++r) {
     Teuchos::Array<GO> cols;
     Teuchos::Array<double> vals;
     cols.push_back(static_cast<GO>(r));
-    vals.push_back(alpha + s.diag[r]);
+    vals.push_back(alpha + beta * s.diag[r]);
     for (int rn : s.neighbours[r])
       if (rn >= 0) {
         cols.push_back(static_cast<GO>(rn));
-        vals.push_back(-1.0);
+        vals.push_back(-beta);
       }
     A->insertGlobalValues(static_cast<GO>(r), cols(), vals());
   }
@@ -65,19 +68,25 @@ double true_residual(const Matrix& A, const MV& X, const MV& B) {
 }  // namespace
 
 int solve_viscous_implicit(const ViscousStencil& s, double nu, double dt,
-                           const std::vector<double>& f, std::vector<double>& u, double tolerance) {
+                           const std::vector<double>& f, std::vector<double>& u, double tolerance,
+                           double beta) {
   if (!Tpetra::isInitialized())
     throw core::SolverError(
         "the implicit viscous solve needs Tpetra initialised: create a fluid::LinearAlgebraScope");
   if (!(nu > 0.0) || !(dt > 0.0))
     throw core::InputError("implicit viscosity needs nu > 0 and dt > 0");
+  if (!(beta >= 0.5 && beta <= 1.0))
+    throw core::InputError("implicit viscosity needs beta in [1/2, 1]");
+  if (std::isinf(dt)) beta = 1.0;  // the steady problem
   const std::size_t n = s.node_of.size();
   if (n == 0) return 0;
   const double h2 = s.h * s.h;
   const double alpha = std::isinf(dt) ? 0.0 : h2 / (nu * dt);
   RCP<const Teuchos::Comm<int>> comm = rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF));
   auto map = rcp(new Map(static_cast<Tpetra::global_size_t>(n), 0, comm));
-  RCP<Matrix> A = assemble(s, alpha, map);
+  RCP<Matrix> A = assemble(s, alpha, beta, map);
+  const std::vector<double> lap_old =
+      beta < 1.0 ? apply_viscous_operator(s, u) : std::vector<double>();
   auto X = rcp(new MV(map, 1)), B = rcp(new MV(map, 1));
   {
     auto x = X->getLocalViewHost(Tpetra::Access::OverwriteAll);
@@ -86,9 +95,10 @@ int solve_viscous_implicit(const ViscousStencil& s, double nu, double dt,
       const auto node = static_cast<std::size_t>(s.node_of[r]);
       x(r, 0) = u[node];
       b(r, 0) = alpha * u[node] + h2 * f[node] / nu;
+      if (beta < 1.0) b(r, 0) += (1.0 - beta) * h2 * lap_old[node];
     }
     for (const ViscousLeg& leg : s.legs)
-      b(static_cast<std::size_t>(leg.unknown), 0) += leg.weight * leg.value;
+      b(static_cast<std::size_t>(leg.unknown), 0) += beta * leg.weight * leg.value;
   }
   Teuchos::ParameterList muelu;
   muelu.set("verbosity", "none");

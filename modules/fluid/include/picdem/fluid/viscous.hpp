@@ -75,22 +75,28 @@ struct ViscousStencil {
 constexpr double kViscousThetaMin = 1e-3;
 
 /// Builds the stencil of `component` (0: u, 1: w). A node is an unknown when it is strictly
-/// inside the tank (for the wall-normal component) and outside every body.
+/// inside the tank (for the wall-normal component), outside every body and, with `fluid_nodes`
+/// (one value per node id), marked 1 there: the free surface. A leg to a node that is not an
+/// unknown, not in a body and not on the tank wall is dropped (zero gradient, as at the free
+/// surface of apply_viscosity).
 ViscousStencil build_viscous_stencil(int component, const ViscousGrid& g,
                                      const std::vector<ViscousBody>& bodies,
-                                     const ViscousWalls& walls);
+                                     const ViscousWalls& walls,
+                                     const std::vector<unsigned char>* fluid_nodes = nullptr);
 
 /// (L u) per node (0 on nodes that are not unknowns): the explicit operator, u per node.
 std::vector<double> apply_viscous_operator(const ViscousStencil& s, const std::vector<double>& u);
 
-/// Backward Euler for one component: (u_new - u_old)/dt = nu L u_new + f, with f per node
-/// [m/s^2]; dt = infinity gives the steady problem -nu L u = f. u holds u_old on entry (and the
-/// initial guess), u_new on return; nodes that are not unknowns are left unchanged. Solved with
-/// Belos CG preconditioned with MueLu (the matrix is symmetric positive definite) to the relative
-/// true residual `tolerance`; throws core::SolverError if it is not reached. Returns iterations.
+/// One implicit step for one component: (u_new - u_old)/dt = nu L (beta u_new + (1 - beta)
+/// u_old) + f, with f per node [m/s^2]; beta = 1 backward Euler, 1/2 Crank-Nicolson; dt =
+/// infinity gives the steady problem -nu L u = f. u holds u_old on entry (and the initial
+/// guess), u_new on return; nodes that are not unknowns are left unchanged. Solved with Belos CG
+/// preconditioned with MueLu (the matrix is symmetric positive definite) to the relative true
+/// residual `tolerance`; throws core::SolverError if it is not reached. Returns iterations. The
+/// loads of the step are viscous_loads of beta u_new + (1 - beta) u_old (they are linear in u).
 int solve_viscous_implicit(const ViscousStencil& s, double nu, double dt,
                            const std::vector<double>& f, std::vector<double>& u,
-                           double tolerance = 1e-12);
+                           double tolerance = 1e-12, double beta = 1.0);
 
 /// Viscous force [N/m] and torque [N m/m] on each body (about its centre) and the force on the
 /// tank walls, from the boundary legs: the fluid at a leg gains mu weight (value - u) per unit
