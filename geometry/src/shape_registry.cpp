@@ -8,7 +8,8 @@ const std::vector<ShapeType>& shape_types() {
   // A new shape adds one line here (doc/shapes.md).
   static const std::vector<ShapeType> types{disk_type(),         polygon_type(),
                                             polygon_file_type(), cylinder_stack_type(),
-                                            ellipse_type(),      rounded_polygon_type()};
+                                            ellipse_type(),      rounded_polygon_type(),
+                                            graded_packing_type()};
   return types;
 }
 

@@ -22,7 +22,7 @@ void declare_motion(core::ParamSchema& v) {
 SolidSpec placed(const core::Params& s, const geometry::PlacedShape& p) {
   SolidSpec spec;
   spec.shape = p.shape;
-  spec.density = s.real("density");
+  spec.density = p.density > 0.0 ? p.density : s.real("density");
   spec.state.x = p.pose.x;
   spec.state.theta = p.pose.theta;
   const auto v = s.reals("velocity");

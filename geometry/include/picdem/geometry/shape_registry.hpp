@@ -16,6 +16,9 @@ namespace picdem::geometry {
 struct PlacedShape {
   ShapePtr shape;
   Pose pose;
+  /// > 0: this shape's own density [kg/m^3] (a generator's class density); 0: the entry's
+  /// `density`.
+  double density = 0.0;
 };
 
 /// What a builder may need beyond its own keys.
@@ -51,6 +54,7 @@ ShapeType polygon_type();          ///< polygon.cpp
 ShapeType polygon_file_type();     ///< polygon.cpp
 ShapeType ellipse_type();          ///< ellipse.cpp
 ShapeType rounded_polygon_type();  ///< rounded_polygon.cpp
+ShapeType graded_packing_type();   ///< graded_packing.cpp
 
 /// The ellipse x^2 / a^2 + z^2 / b^2 <= 1 of the body frame as a G1 convex arc spline
 /// (ellipse.cpp, doc/shapes.md): its largest distance to the true ellipse is below
