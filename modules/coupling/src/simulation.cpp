@@ -1,5 +1,6 @@
 #include "picdem/coupling/simulation.hpp"
 
+#include "checkpoint_state.hpp"
 #include "simulation_state.hpp"
 
 #include <algorithm>
@@ -96,19 +97,10 @@ Simulation::Simulation(core::Comm comm, core::Params params, std::string output_
     s.density_interval = params.integer("free_surface/density_correction_interval");
     if (s.density_relaxation > 0.0)
       s.density_solver = std::make_unique<fluid::PressureSolver>(d, params);
-    s.u = FaceField(d, Stagger::FaceX);
-    s.w = FaceField(d, Stagger::FaceZ);
-    s.u_old = s.u, s.w_old = s.w, s.weight_u = s.u, s.weight_w = s.w;
-    s.u_valid = grid::GridArray<signed char>(d, Stagger::FaceX, 0);
-    s.w_valid = grid::GridArray<signed char>(d, Stagger::FaceZ, 0);
-    s.p = grid::CellField(d, Stagger::Cell);
-    s.cells = fluid::CellStates(d, Stagger::Cell, static_cast<signed char>(CellState::Air));
+    s.fluid = fluid::FluidState(d);
     s.count = grid::GridArray<int>(d, Stagger::Cell, 0);
-    s.occupancy = grid::CellField(d, Stagger::Cell);
-    s.phi = grid::CellField(d, Stagger::Cell);
     s.ghost_fluid = params.string("free_surface/method") == "ghost_fluid";
     s.theta_min = params.real("free_surface/theta_min");
-    s.apertures = fluid::open_apertures(d);
     // Water is seeded where neither solids nor obstacles are.
     const SolidScene scene0 = scene_of(s.dem.get(), s.obstacles);
     const SolidLocator locator(scene0);
@@ -198,8 +190,8 @@ double choose_time_step(SimulationState& s) {
   if (!s.has_fluid) return dt_max;
   // The particles may outrun the grid (FLIP): the fastest of either sets the CFL limit.
   const double cfl = s.params.real("time/cfl");
-  double dt = std::min(
-      dt_max, fluid::cfl_time_step(s.u, s.w, s.spec.h, cfl, s.params.real("time/dt_max"), s.comm));
+  double dt = std::min(dt_max, fluid::cfl_time_step(s.fluid.u, s.fluid.w, s.spec.h, cfl,
+                                                    s.params.real("time/dt_max"), s.comm));
   if (s.diag.max_speed > 0.0) dt = std::min(dt, cfl * s.spec.h / s.diag.max_speed);
   if (!(dt >= s.params.real("time/dt_min")) && s.t_end - s.t > s.params.real("time/dt_min")) {
     std::ostringstream m;
@@ -217,7 +209,8 @@ void place_solids(SimulationState& s) {
   core::ScopedTimer timer("geometry");
   s.scene = scene_of(s.dem.get(), s.obstacles);
   if (!s.has_bodies) return;
-  s.cut = cut_cells(s.scene, *s.decomp, s.params.real("coupling/tiny_cell_fraction"), s.apertures);
+  s.cut = cut_cells(s.scene, *s.decomp, s.params.real("coupling/tiny_cell_fraction"),
+                    s.fluid.apertures);
 }
 
 // A cut cell whose sliver of fluid holds no particle, with S <= 1/2 at its (covered) centre, would
@@ -229,9 +222,10 @@ void wet_enclosed_cut_cells(SimulationState& s) {
   const auto fluid = static_cast<signed char>(CellState::Fluid);
   const auto air = static_cast<signed char>(CellState::Air);
   const auto solid = static_cast<signed char>(CellState::Solid);
-  const auto b = s.cells.storage();
+  const auto b = s.fluid.cells.storage();
   auto candidate = [&](int i, int k) {
-    return s.cells.in_storage(i, k) && s.cells(i, k) == air && s.cut.fluid_fraction(i, k) < 1.0;
+    return s.fluid.cells.in_storage(i, k) && s.fluid.cells(i, k) == air &&
+           s.cut.fluid_fraction(i, k) < 1.0;
   };
   grid::GridArray<signed char> seen(*s.decomp, Stagger::Cell, 0);
   std::vector<std::pair<int, int>> group, todo;
@@ -249,13 +243,13 @@ void wet_enclosed_cut_cells(SimulationState& s) {
         const struct {
           double E;
           int i, k;
-        } faces[4] = {{s.apertures.E_x(ci, ck), ci - 1, ck},
-                      {s.apertures.E_x(ci + 1, ck), ci + 1, ck},
-                      {s.apertures.E_z(ci, ck), ci, ck - 1},
-                      {s.apertures.E_z(ci, ck + 1), ci, ck + 1}};
+        } faces[4] = {{s.fluid.apertures.E_x(ci, ck), ci - 1, ck},
+                      {s.fluid.apertures.E_x(ci + 1, ck), ci + 1, ck},
+                      {s.fluid.apertures.E_z(ci, ck), ci, ck - 1},
+                      {s.fluid.apertures.E_z(ci, ck + 1), ci, ck + 1}};
         for (const auto& f : faces) {
           if (f.E <= 0.0 || f.i < 0 || f.k < 0 || f.i >= s.spec.nx || f.k >= s.spec.nz) continue;
-          if (!s.cells.in_storage(f.i, f.k)) {
+          if (!s.fluid.cells.in_storage(f.i, f.k)) {
             enclosed = false;  // the group reaches the edge of this rank's window
             continue;
           }
@@ -263,12 +257,12 @@ void wet_enclosed_cut_cells(SimulationState& s) {
             if (!seen(f.i, f.k)) seen(f.i, f.k) = 1, todo.emplace_back(f.i, f.k);
             continue;
           }
-          const signed char nb = s.cells(f.i, f.k);
+          const signed char nb = s.fluid.cells(f.i, f.k);
           enclosed = enclosed && (nb == fluid || nb == solid);
         }
       }
       if (enclosed)
-        for (const auto& [gi, gk] : group) s.cells(gi, gk) = fluid;
+        for (const auto& [gi, gk] : group) s.fluid.cells(gi, gk) = fluid;
     }
 }
 
@@ -280,13 +274,13 @@ void mark_cells(SimulationState& s) {
   core::ScopedTimer timer("transfer: mark cells");
   particles::count_per_cell(s.particles, *s.halo, s.count);
   particle_occupancy(s.particles, *s.decomp, *s.halo,
-                     s.particle_cfg.per_cell_1d * s.particle_cfg.per_cell_1d, s.occupancy);
-  if (s.has_bodies) open_share_correction(s.occupancy, s.cut, *s.decomp);
-  const auto b = s.cells.storage();
+                     s.particle_cfg.per_cell_1d * s.particle_cfg.per_cell_1d, s.fluid.occupancy);
+  if (s.has_bodies) open_share_correction(s.fluid.occupancy, s.cut, *s.decomp);
+  const auto b = s.fluid.cells.storage();
   for (int k = b.k0; k < b.k1; ++k)
     for (int i = b.i0; i < b.i1; ++i) {
       CellState c = s.count(i, k) > 0 ? CellState::Fluid : CellState::Air;
-      const double S = s.occupancy(i, k);
+      const double S = s.fluid.occupancy(i, k);
       if (s.has_bodies) {
         const double f = s.cut.fluid_fraction(i, k);
         if (f <= 0.0)
@@ -294,42 +288,44 @@ void mark_cells(SimulationState& s) {
         else if (c == CellState::Air && f < 1.0 && S > 0.5)
           c = CellState::Fluid;
       }
-      s.phi(i, k) = 0.5 - S;
-      s.cells(i, k) = static_cast<signed char>(c);
+      s.fluid.phi(i, k) = 0.5 - S;
+      s.fluid.cells(i, k) = static_cast<signed char>(c);
     }
   if (s.has_bodies) {
     wet_enclosed_cut_cells(s);
     // A group reaching the edge of one rank's window is seen whole by its owner: owners decide.
-    s.halo->forward(s.cells);
+    s.halo->forward(s.fluid.cells);
   }
-  if (s.ghost_fluid) s.surface = fluid::surface_fractions(s.phi, s.cells, *s.decomp, s.theta_min);
+  if (s.ghost_fluid)
+    s.fluid.surface = fluid::surface_fractions(s.fluid.phi, s.fluid.cells, *s.decomp, s.theta_min);
 }
 
 // Faces carrying fluid velocity (open, next to a fluid cell), plus faces closed by a body, which
 // carry its rigid velocity; then velocities are extended into the rest.
 void extend(SimulationState& s, FaceField& u, FaceField& w) {
-  fluid::fluid_faces(s.cells, s.apertures, s.u_valid, s.w_valid);
+  fluid::fluid_faces(s.fluid.cells, s.fluid.apertures, s.fluid.u_valid, s.fluid.w_valid);
   if (s.has_bodies)
-    rigid_face_velocities(s.scene, s.cut, s.apertures, *s.decomp, u, w, s.u_valid, s.w_valid);
-  fluid::extend_velocity(u, w, s.u_valid, s.w_valid, s.decomp->halo(), *s.halo);
+    rigid_face_velocities(s.scene, s.cut, s.fluid.apertures, *s.decomp, u, w, s.fluid.u_valid,
+                          s.fluid.w_valid);
+  fluid::extend_velocity(u, w, s.fluid.u_valid, s.fluid.w_valid, s.decomp->halo(), *s.halo);
 }
 
 // transfer: particles -> grid faces; u~ before forces is kept for the FLIP increment.
 void particles_to_grid(SimulationState& s) {
   core::ScopedTimer timer("transfer: particles to grid");
-  particles::to_grid(s.particles, *s.decomp, *s.halo, s.particle_cfg, s.u, s.w, s.weight_u,
-                     s.weight_w);
-  fluid::enforce_walls(s.u, s.w, s.fluid_cfg, *s.decomp);
-  extend(s, s.u, s.w);
-  s.u_old = s.u, s.w_old = s.w;
+  particles::to_grid(s.particles, *s.decomp, *s.halo, s.particle_cfg, s.fluid.u, s.fluid.w,
+                     s.fluid.weight_u, s.fluid.weight_w);
+  fluid::enforce_walls(s.fluid.u, s.fluid.w, s.fluid_cfg, *s.decomp);
+  extend(s, s.fluid.u, s.fluid.w);
+  s.fluid.u_old = s.fluid.u, s.fluid.w_old = s.fluid.w;
 }
 
 // forces: gravity and explicit viscosity -> u~.
 void add_forces(SimulationState& s, double dt) {
   core::ScopedTimer timer("forces");
-  fluid::apply_gravity(s.u, s.w, s.cells, dt, s.fluid_cfg);
-  fluid::apply_viscosity(s.u, s.w, s.cells, dt, s.fluid_cfg, *s.decomp, *s.halo);
-  fluid::enforce_walls(s.u, s.w, s.fluid_cfg, *s.decomp);
+  fluid::apply_gravity(s.fluid.u, s.fluid.w, s.fluid.cells, dt, s.fluid_cfg);
+  fluid::apply_viscosity(s.fluid.u, s.fluid.w, s.fluid.cells, dt, s.fluid_cfg, *s.decomp, *s.halo);
+  fluid::enforce_walls(s.fluid.u, s.fluid.w, s.fluid_cfg, *s.decomp);
 }
 
 // contact: collision loads predicted at level n with dt in eq. 8 (for eq. 6 inside the PPE).
@@ -345,20 +341,21 @@ void solve_pressure(SimulationState& s, double dt) {
   std::vector<fluid::SolidCoupling> couplings;
   if (s.dem) {
     core::ScopedTimer timer("geometry");
-    couplings = solid_couplings(s.scene, s.cut, s.cells, *s.decomp, s.collision_loads, s.quadrature,
-                                dt, s.comm);
+    couplings = solid_couplings(s.scene, s.cut, s.fluid.cells, *s.decomp, s.collision_loads,
+                                s.quadrature, dt, s.comm);
   }
   core::ScopedTimer timer("pressure");
-  s.last_solve = s.pressure->solve(s.cells, s.apertures, s.u, s.w, couplings, dt, s.fluid_cfg, s.p,
-                                   s.ghost_fluid ? &s.surface : nullptr);
+  s.last_solve =
+      s.pressure->solve(s.fluid.cells, s.fluid.apertures, s.fluid.u, s.fluid.w, couplings, dt,
+                        s.fluid_cfg, s.fluid.p, s.ghost_fluid ? &s.fluid.surface : nullptr);
 }
 
 // project: u^{n+1} = u~ - dt/rho grad p on open faces.
 void project(SimulationState& s, double dt) {
   core::ScopedTimer timer("project");
-  fluid::project(s.u, s.w, s.p, s.cells, s.apertures, dt, s.fluid_cfg,
-                 s.ghost_fluid ? &s.surface : nullptr);
-  fluid::enforce_walls(s.u, s.w, s.fluid_cfg, *s.decomp);
+  fluid::project(s.fluid.u, s.fluid.w, s.fluid.p, s.fluid.cells, s.fluid.apertures, dt, s.fluid_cfg,
+                 s.ghost_fluid ? &s.fluid.surface : nullptr);
+  fluid::enforce_walls(s.fluid.u, s.fluid.w, s.fluid_cfg, *s.decomp);
 }
 
 // solids: F_fluid = J p^{n+1}, then K DEM subcycles (eqs. 21-25) with it held fixed.
@@ -366,7 +363,7 @@ void advance_solids(SimulationState& s, double dt) {
   if (!s.dem) return;
   core::ScopedTimer timer("solids");
   s.fluid_loads.clear();
-  if (s.has_fluid) s.fluid_loads = fluid_loads(*s.pressure, s.p, *s.dem);
+  if (s.has_fluid) s.fluid_loads = fluid_loads(*s.pressure, s.fluid.p, *s.dem);
   s.dem->advance(dt, s.fluid_loads);
 }
 
@@ -377,19 +374,22 @@ void grid_to_particles(SimulationState& s) {
   // increment u - u_old is the fluid's change only, not a body sweeping over a face. The scene
   // keeps the cut cells' body order (solids may have migrated between ranks in the DEM).
   s.scene = advanced_scene(s.scene, s.dem.get());
-  extend(s, s.u, s.w);
-  fluid::enforce_walls(s.u, s.w, s.fluid_cfg, *s.decomp);
+  extend(s, s.fluid.u, s.fluid.w);
+  fluid::enforce_walls(s.fluid.u, s.fluid.w, s.fluid_cfg, *s.decomp);
   if (s.has_bodies) {
     const auto& spec = s.spec;
-    const auto bu = s.u.storage(), bw = s.w.storage();
+    const auto bu = s.fluid.u.storage(), bw = s.fluid.w.storage();
     for (int k = bu.k0; k < bu.k1; ++k)
       for (int i = bu.i0; i < bu.i1; ++i)
-        if (i > 0 && i < spec.nx && s.apertures.E_x(i, k) <= 0.0) s.u_old(i, k) = s.u(i, k);
+        if (i > 0 && i < spec.nx && s.fluid.apertures.E_x(i, k) <= 0.0)
+          s.fluid.u_old(i, k) = s.fluid.u(i, k);
     for (int k = bw.k0; k < bw.k1; ++k)
       for (int i = bw.i0; i < bw.i1; ++i)
-        if (k > 0 && k < spec.nz && s.apertures.E_z(i, k) <= 0.0) s.w_old(i, k) = s.w(i, k);
+        if (k > 0 && k < spec.nz && s.fluid.apertures.E_z(i, k) <= 0.0)
+          s.fluid.w_old(i, k) = s.fluid.w(i, k);
   }
-  particles::from_grid(s.particles, s.particle_cfg, s.u_old, s.w_old, s.u, s.w, s.spec);
+  particles::from_grid(s.particles, s.particle_cfg, s.fluid.u_old, s.fluid.w_old, s.fluid.u,
+                       s.fluid.w, s.spec);
   if (s.dem && s.beta < 1.0)
     damp_gap_particles(s.particles, all_contacts(*s.dem, s.comm), s.spec.h, s.beta);
 }
@@ -413,16 +413,17 @@ bool correct_density(SimulationState& s) {
   const auto& d = *s.decomp;
   constexpr double cap = 0.5;  // |S - 1| taken at most: half a cell's particles per step
   grid::CellField source(d, Stagger::Cell, 0.0);
-  const bool mine = excess_area(s.occupancy, s.cells, s.has_bodies ? &s.cut : nullptr,
+  const bool mine = excess_area(s.fluid.occupancy, s.fluid.cells, s.has_bodies ? &s.cut : nullptr,
                                 s.density_relaxation, cap, d, source);
   if (!s.comm.any(mine)) return false;
   fluid::FluidConfig unit = s.fluid_cfg;
   unit.rho = 1.0, unit.no_slip = false;
-  const fluid::SurfaceFractions* surface = s.ghost_fluid ? &s.surface : nullptr;
+  const fluid::SurfaceFractions* surface = s.ghost_fluid ? &s.fluid.surface : nullptr;
   FaceField dx(d, Stagger::FaceX, 0.0), dz(d, Stagger::FaceZ, 0.0);
   grid::CellField q(d, Stagger::Cell, 0.0);
-  s.density_solver->solve(s.cells, s.apertures, dx, dz, {}, 1.0, unit, q, surface, &source);
-  fluid::project(dx, dz, q, s.cells, s.apertures, 1.0, unit, surface);
+  s.density_solver->solve(s.fluid.cells, s.fluid.apertures, dx, dz, {}, 1.0, unit, q, surface,
+                          &source);
+  fluid::project(dx, dz, q, s.fluid.cells, s.fluid.apertures, 1.0, unit, surface);
   // A displacement of more than half a cell would skip the stencil: capped.
   const double most = 0.5 * s.spec.h;
   for (auto* f : {&dx, &dz}) {
@@ -432,8 +433,9 @@ bool correct_density(SimulationState& s) {
   }
   // Closed faces (walls, bodies) hold 0 and count as known; the rest is extended.
   grid::GridArray<signed char> du(d, Stagger::FaceX, 0), dw(d, Stagger::FaceZ, 0);
-  fluid::fluid_faces(s.cells, s.apertures, du, dw);
-  for (auto [valid, E] : {std::pair{&du, &s.apertures.E_x}, std::pair{&dw, &s.apertures.E_z}}) {
+  fluid::fluid_faces(s.fluid.cells, s.fluid.apertures, du, dw);
+  for (auto [valid, E] :
+       {std::pair{&du, &s.fluid.apertures.E_x}, std::pair{&dw, &s.fluid.apertures.E_z}}) {
     const auto b = valid->storage();
     for (int k = b.k0; k < b.k1; ++k)
       for (int i = b.i0; i < b.i1; ++i)
@@ -458,7 +460,7 @@ void advect_particles(SimulationState& s, double dt) {
   // A blown-up advection is found on one rank: stop every rank with the message, never just one.
   std::string failure;
   try {
-    particles::advect(s.particles, s.particle_cfg, s.u, s.w, s.spec, dt, out_of_solids);
+    particles::advect(s.particles, s.particle_cfg, s.fluid.u, s.fluid.w, s.spec, dt, out_of_solids);
   } catch (const core::SolverError& e) {
     failure = e.what();
   }
@@ -476,10 +478,10 @@ void advect_particles(SimulationState& s, double dt) {
   if (solids) reject = [&](Vec2 p) { return locator.inside(p); };
   // A cut cell holds fewer particles than a full one (its fluid part is smaller): reseeding it up
   // to particles/min_per_cell would add water every step. Cut cells are left out of reseeding.
-  const fluid::CellStates* reseed_cells = &s.cells;
+  const fluid::CellStates* reseed_cells = &s.fluid.cells;
   fluid::CellStates uncut;
   if (solids) {
-    uncut = s.cells;
+    uncut = s.fluid.cells;
     const auto b = uncut.storage();
     for (int k = b.k0; k < b.k1; ++k)
       for (int i = b.i0; i < b.i1; ++i)
@@ -487,27 +489,8 @@ void advect_particles(SimulationState& s, double dt) {
           uncut(i, k) = static_cast<signed char>(CellState::Solid);
     reseed_cells = &uncut;
   }
-  particles::reseed(s.particles, s.particle_cfg, *s.decomp, s.count, *reseed_cells, s.u, s.w,
-                    s.step, reject);
-}
-
-// Highest crossing of S = 1/2 from fluid below to air above in the column holding x.
-double surface_height(const SimulationState& s, double x) {
-  if (!s.has_fluid) return std::nan("");
-  int i, k;
-  s.spec.cell_of({x, s.spec.origin.z}, i, k);
-  const auto own = s.decomp->owned_cells();
-  double best = -std::numeric_limits<double>::infinity();
-  if (i >= own.i0 && i < own.i1)
-    for (int kk = own.k0; kk < own.k1; ++kk) {
-      const double below = s.occupancy(i, kk), above = s.occupancy(i, kk + 1);
-      if (kk + 1 >= s.spec.nz || !(below > 0.5) || above > 0.5) continue;
-      // S = 1/2 between the two centres, linearly
-      const double z0 = s.spec.position(Stagger::Cell, i, kk).z;
-      best = std::max(best, z0 + s.spec.h * (below - 0.5) / (below - above));
-    }
-  best = s.comm.max(best);
-  return std::isfinite(best) ? best : std::nan("");
+  particles::reseed(s.particles, s.particle_cfg, *s.decomp, s.count, *reseed_cells, s.fluid.u,
+                    s.fluid.w, s.step, reject);
 }
 
 // Figures of the new state; a non-finite value anywhere stops the run on every rank.
@@ -546,12 +529,14 @@ void record_diagnostics(SimulationState& s, double dt) {
   g.particles = s.comm.sum(static_cast<long long>(P.x.size()));
   if (s.has_fluid) {
     particle_occupancy(s.particles, *s.decomp, *s.halo,
-                       s.particle_cfg.per_cell_1d * s.particle_cfg.per_cell_1d, s.occupancy);
-    if (s.has_bodies) open_share_correction(s.occupancy, s.cut, *s.decomp);
-    g.fluid_volume = occupied_area(s.occupancy, *s.decomp, s.comm, s.has_bodies ? &s.cut : nullptr);
+                       s.particle_cfg.per_cell_1d * s.particle_cfg.per_cell_1d, s.fluid.occupancy);
+    if (s.has_bodies) open_share_correction(s.fluid.occupancy, s.cut, *s.decomp);
+    g.fluid_volume =
+        occupied_area(s.fluid.occupancy, *s.decomp, s.comm, s.has_bodies ? &s.cut : nullptr);
   }
   g.levels.clear();
-  for (double x : s.params.reals("output/level_probes")) g.levels.push_back(surface_height(s, x));
+  for (double x : s.params.reals("output/level_probes"))
+    g.levels.push_back(s.has_fluid ? s.fluid.surface_height(x) : std::nan(""));
   const auto box = s.params.reals("output/solid_count_box");
   long long inside = 0;
   if (s.dem && box.size() == 4)
@@ -566,9 +551,9 @@ void Simulation::step() {
   SimulationState& s = *s_;
   const double dt = choose_time_step(s);
   if (s.has_fluid) {
-    place_solids(s);          // geometry
-    mark_cells(s);            // transfer (cells)
-    if (correct_density(s))   // density (positions only)
+    place_solids(s);         // geometry
+    mark_cells(s);           // transfer (cells)
+    if (correct_density(s))  // density (positions only)
       mark_cells(s);
     particles_to_grid(s);     // transfer
     add_forces(s, dt);        // forces
@@ -586,70 +571,17 @@ void Simulation::step() {
   record_diagnostics(s, dt);
 }
 
-double Simulation::pressure_at(double x, double z) const {
-  const SimulationState& s = *s_;
-  int i, k;
-  s.spec.cell_of({x, z}, i, k);
-  const double mine = s.has_fluid && s.decomp->owned_cells().contains(i, k) ? s.p(i, k) : 0.0;
-  return s.comm.sum(mine);
+const fluid::FluidState& Simulation::fluid() const {
+  if (!s_->has_fluid) throw std::logic_error("Simulation::fluid(): the case has no water");
+  return s_->fluid;
 }
 
-core::Vec2 Simulation::fluid_momentum() const {
-  const SimulationState& s = *s_;
-  double mx = 0.0, mz = 0.0;
-  for (std::size_t n = 0; n < s.particles.size(); ++n)
-    mx += s.particles.u[n], mz += s.particles.w[n];
-  return {s.comm.sum(mx * s.particle_mass), s.comm.sum(mz * s.particle_mass)};
+const particles::ParticleSet& Simulation::particles() const {
+  return s_->particles;
 }
 
-core::Vec2 Simulation::wall_pressure_force() const {
-  const SimulationState& s = *s_;
-  if (!s.has_fluid) return {};
-  const auto own = s.decomp->owned_cells();
-  const auto fluid = static_cast<signed char>(CellState::Fluid);
-  const double h = s.spec.h, rho_g = s.fluid_cfg.rho * s.fluid_cfg.g.z;  // g.z < 0
-  double fx = 0.0, fz = 0.0;
-  for (int k = own.k0; k < own.k1; ++k)
-    for (int i = own.i0; i < own.i1; ++i) {
-      if (s.cells(i, k) != fluid) continue;
-      if (i == 0) fx += s.p(i, k) * h;
-      if (i == s.spec.nx - 1) fx -= s.p(i, k) * h;
-      if (k == 0) fz += (s.p(i, k) - 0.5 * h * rho_g) * h;
-      if (k == s.spec.nz - 1) fz -= (s.p(i, k) + 0.5 * h * rho_g) * h;
-    }
-  return {s.comm.sum(fx), s.comm.sum(fz)};
-}
-
-double Simulation::max_grid_speed() const {
-  const SimulationState& s = *s_;
-  if (!s.has_fluid) return 0.0;
-  grid::GridArray<signed char> vu(*s.decomp, Stagger::FaceX, 0), vw(*s.decomp, Stagger::FaceZ, 0);
-  fluid::fluid_faces(s.cells, s.apertures, vu, vw);
-  double m = 0.0;
-  const auto bu = s.decomp->owned(Stagger::FaceX), bw = s.decomp->owned(Stagger::FaceZ);
-  for (int k = bu.k0; k < bu.k1; ++k)
-    for (int i = bu.i0; i < bu.i1; ++i)
-      if (vu(i, k)) m = std::max(m, std::abs(s.u(i, k)));
-  for (int k = bw.k0; k < bw.k1; ++k)
-    for (int i = bw.i0; i < bw.i1; ++i)
-      if (vw(i, k)) m = std::max(m, std::abs(s.w(i, k)));
-  return s.comm.max(m);
-}
-
-std::vector<core::SolidState> Simulation::solids() const {
-  return s_->dem ? s_->dem->gather_all() : std::vector<core::SolidState>{};
-}
-
-double Simulation::surface_height(double x) const {
-  return coupling::surface_height(*s_, x);
-}
-
-double Simulation::max_contact_overlap() const {
-  const SimulationState& s = *s_;
-  double m = 0.0;
-  if (s.dem)
-    for (const auto& c : s.dem->active_contacts()) m = std::max(m, c.delta);
-  return s.comm.max(m);
+const dem::DemSolver* Simulation::dem() const {
+  return s_->dem.get();
 }
 
 std::vector<core::SolidLoads> Simulation::fluid_loads() const {
@@ -669,7 +601,8 @@ void Simulation::run(long long max_steps) {
   SimulationState& s = *s_;
   core::Progress progress(s.comm, s.t, s.t_end, s.params.real("output/progress_seconds"));
   if (s.output && !s.restarted)
-    s.output->frame(s.t, s.step, s.diag, s.particles, s.p, s.cells, s.dem.get(), s.obstacles, true);
+    s.output->frame(s.t, s.step, s.diag, s.particles, s.fluid.p, s.fluid.cells, s.dem.get(),
+                    s.obstacles, true);
   const CheckpointConfig& ck = s.checkpoint;
   double wall_last_checkpoint = core::wall_seconds();
   long long last_checkpoint_step = s.restarted ? s.step : -1;
@@ -682,11 +615,11 @@ void Simulation::run(long long max_steps) {
   s.stopped_by_signal = false;
   while (s.t < s.t_end * (1.0 - 1e-12) && (max_steps <= 0 || s.step < max_steps)) {
     step();
-    check_step(s);
+    check_step(s.diag, s.spec.h, s.has_fluid, s.dem.get(), s.comm);
     if (s.output) {
       s.output->record(s.diag);
-      s.output->frame(s.t, s.step, s.diag, s.particles, s.p, s.cells, s.dem.get(), s.obstacles,
-                      false);
+      s.output->frame(s.t, s.step, s.diag, s.particles, s.fluid.p, s.fluid.cells, s.dem.get(),
+                      s.obstacles, false);
     }
     progress.report(s.t, s.step, s.diag.dt, s.diag.ppe_iterations);
     const bool stop = s.comm.any(stop_signal_received());
@@ -709,8 +642,15 @@ void Simulation::run(long long max_steps) {
   progress.report(s.t, s.step, s.diag.dt, s.diag.ppe_iterations, true);
   if (!ck.directory.empty() && ck.at_end && last_checkpoint_step != s.step) checkpoint();
   if (s.output)
-    s.output->finish(s.t, s.step, s.diag, s.particles, s.p, s.cells, s.dem.get(), s.obstacles);
+    s.output->finish(s.t, s.step, s.diag, s.particles, s.fluid.p, s.fluid.cells, s.dem.get(),
+                     s.obstacles);
 }
+
+namespace {
+CheckpointParts checkpoint_parts(SimulationState& s) {
+  return {s.comm, s.params, *s.decomp, s.particles, s.has_fluid ? &s.fluid : nullptr, s.dem.get()};
+}
+}  // namespace
 
 void Simulation::enable_checkpoints(const std::string& directory) {
   SimulationState& s = *s_;
@@ -721,7 +661,9 @@ void Simulation::enable_checkpoints(const std::string& directory) {
 
 void Simulation::restart_from(const std::string& checkpoint, const std::string& output_dir) {
   SimulationState& s = *s_;
-  const Output::Mark mark = read_checkpoint(s, checkpoint);
+  const CheckpointHeader head = read_checkpoint(checkpoint_parts(s), checkpoint);
+  s.t = head.t, s.step = head.step, s.diag = head.diag;
+  const Output::Mark& mark = head.mark;
   s.restarted = true;
   s.output.reset();
   if (!output_dir.empty())
@@ -731,8 +673,9 @@ void Simulation::restart_from(const std::string& checkpoint, const std::string& 
 }
 
 void Simulation::write_checkpoint(const std::string& path) const {
-  const SimulationState& s = *s_;
-  coupling::write_checkpoint(s, path, s.output ? s.output->mark() : Output::Mark{});
+  SimulationState& s = *s_;  // the parts are only read
+  const CheckpointHeader head{s.t, s.step, s.diag, s.output ? s.output->mark() : Output::Mark{}};
+  coupling::write_checkpoint(checkpoint_parts(s), head, path);
 }
 
 bool Simulation::stopped_by_signal() const {

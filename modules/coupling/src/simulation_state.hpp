@@ -12,6 +12,7 @@
 #include "picdem/coupling/solids_in_fluid.hpp"
 #include "picdem/dem/dem_solver.hpp"
 #include "picdem/fluid/fluid.hpp"
+#include "picdem/fluid/fluid_state.hpp"
 #include "picdem/fluid/pressure_solver.hpp"
 #include "picdem/geometry/cut_cells.hpp"
 #include "picdem/grid/field.hpp"
@@ -34,20 +35,13 @@ struct SimulationState {
   particles::ParticleConfig particle_cfg;
   std::unique_ptr<fluid::PressureSolver> pressure;
   particles::ParticleSet particles;
-  FaceField u, w, u_old, w_old, weight_u, weight_w;
-  grid::GridArray<signed char> u_valid, w_valid;
-  grid::CellField p;
-  fluid::CellStates cells;
+  fluid::FluidState fluid;  // u, w, p, cells, free surface, apertures
   grid::GridArray<int> count;
-  grid::CellField occupancy;  // S of free_surface.hpp
-  grid::CellField phi;        // level set 1/2 - S (open-volume corrected), < 0 in the fluid
-  bool ghost_fluid = true;    // sub-cell free surface (else p = 0 at air cell centres)
+  bool ghost_fluid = true;  // sub-cell free surface (else p = 0 at air cell centres)
   double theta_min = 0.01;
-  fluid::SurfaceFractions surface;
-  fluid::Apertures apertures;
-  double particle_mass = 0.0;  // per unit depth
-  double density_relaxation = 0.0;                       // free_surface/density_correction
-  long long density_interval = 1;                        // .../density_correction_interval
+  double particle_mass = 0.0;                             // per unit depth
+  double density_relaxation = 0.0;                        // free_surface/density_correction
+  long long density_interval = 1;                         // .../density_correction_interval
   std::unique_ptr<fluid::PressureSolver> density_solver;  // its Poisson equation
 
   // solids

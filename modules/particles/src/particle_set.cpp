@@ -148,6 +148,12 @@ void ParticleSet::permute(const std::vector<std::size_t>& order) {
   permute_in(id, order, tmp_id);
 }
 
+core::Vec2 velocity_sum(const ParticleSet& particles, const core::Comm& comm) {
+  double sx = 0.0, sz = 0.0;
+  for (std::size_t n = 0; n < particles.size(); ++n) sx += particles.u[n], sz += particles.w[n];
+  return {comm.sum(sx), comm.sum(sz)};
+}
+
 ParticleSet seed(const grid::Decomposition& d, const ParticleConfig& config,
                  const std::function<bool(core::Vec2)>& inside) {
   const grid::GridSpec& s = d.spec();

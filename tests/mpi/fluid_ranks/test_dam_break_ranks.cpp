@@ -9,6 +9,7 @@
 
 #include "case_loader.hpp"
 #include "picdem/coupling/simulation.hpp"
+#include "picdem/dem/dem_solver.hpp"
 
 using namespace picdem;
 
@@ -36,8 +37,9 @@ RunResult run_case_on(int ranks, const std::string& file, const std::vector<std:
     coupling::Simulation sim(comm, params, "");
     for (int n = 0; n < steps; ++n) sim.step();
     out.d = sim.diagnostics();
-    for (const auto& st : sim.solids())
-      out.solids.insert(out.solids.end(), {st.x.x, st.x.z, st.theta, st.v.x, st.v.z, st.omega});
+    if (sim.dem())
+      for (const auto& st : sim.dem()->gather_all())
+        out.solids.insert(out.solids.end(), {st.x.x, st.x.z, st.theta, st.v.x, st.v.z, st.omega});
     MPI_Comm_free(&sub);
   }
   MPI_Group_free(&group);

@@ -8,6 +8,8 @@
 
 #include "case_loader.hpp"
 #include "picdem/coupling/simulation.hpp"
+#include "picdem/dem/dem_solver.hpp"
+#include "picdem/fluid/fluid_state.hpp"
 
 using namespace picdem;
 
@@ -32,14 +34,14 @@ TEST(Archimedes, FloatingBoxSettlesAtItsDraft) {
   while (sim.time() < t_end - 1e-12) {
     sim.step();
     if (sim.time() < 0.5 * t_end) continue;
-    const auto box = sim.solids().at(0);
+    const auto box = sim.dem()->gather_all().at(0);
     // The still-water level: the mean surface height every centimetre along the tank, away from
     // the box (the radiated waves are still travelling out; a probe by a wall sees them pass).
     double level = 0.0;
     int probes = 0;
     for (double x = 0.005; x < length; x += 0.01) {
       if (std::abs(x - box.x.x) < 0.5 * W + 2 * h) continue;
-      const double z = sim.surface_height(x);
+      const double z = sim.fluid().surface_height(x);
       if (std::isfinite(z)) level += z, ++probes;
     }
     level /= probes;
@@ -73,8 +75,8 @@ TEST(Archimedes, FloatingDiskHalfSubmerged) {
   while (sim.time() < t_end - 1e-12) {
     sim.step();
     if (sim.time() < 0.5 * t_end) continue;
-    const auto disk = sim.solids().at(0);
-    sum += submerged_segment_area(r, disk.x.z - sim.surface_height(0.015));
+    const auto disk = sim.dem()->gather_all().at(0);
+    sum += submerged_segment_area(r, disk.x.z - sim.fluid().surface_height(0.015));
     ++n;
   }
   const double expected = 0.5 * M_PI * r * r;  // (rho_s / rho_f) pi r^2
@@ -88,9 +90,9 @@ TEST(Archimedes, NeutralDiskStaysPutAndLoadMatchesPressureIntegral) {
   core::Comm comm;
   const auto params = test_support::load_case(comm, "cases/neutral_disk/case.yaml");
   coupling::Simulation sim(comm, params, "");
-  const auto start = sim.solids().at(0);
+  const auto start = sim.dem()->gather_all().at(0);
   sim.run();
-  const auto end = sim.solids().at(0);
+  const auto end = sim.dem()->gather_all().at(0);
   const double h = params.real("grid/cell_size"), r = 0.01, rho = 1000.0, g = 9.81;
   const double drift = core::norm(end.x - start.x);
   if (comm.is_root())
@@ -108,7 +110,7 @@ TEST(Archimedes, NeutralDiskStaysPutAndLoadMatchesPressureIntegral) {
     const core::Vec2 on = end.x + r * nrm, out = on + 0.9 * h * nrm;
     int i = static_cast<int>(std::floor(out.x / h)), k = static_cast<int>(std::floor(out.z / h));
     const double zc = (k + 0.5) * h;
-    const double p = sim.pressure_at((i + 0.5) * h, zc) + rho * g * (zc - on.z);
+    const double p = sim.fluid().pressure_at({(i + 0.5) * h, zc}) + rho * g * (zc - on.z);
     integral -= (p * 2 * M_PI * r / n) * nrm;
   }
   const double buoyancy = rho * g * M_PI * r * r;
@@ -128,7 +130,7 @@ TEST(FixedObstacle, StillWaterStaysStillAndHydrostatic) {
   coupling::Simulation sim(comm, params, "");
   sim.run();
   const double rho = 1000.0, g = 9.81, level = 0.1, h = params.real("grid/cell_size");
-  const double grid_speed = sim.max_grid_speed();  // collective: on every rank
+  const double grid_speed = sim.fluid().max_grid_speed();  // collective: on every rank
   if (comm.is_root())
     std::printf("still tank with obstacle: max particle speed %.3e m/s, grid %.3e m/s\n",
                 sim.diagnostics().max_speed, grid_speed);
@@ -141,6 +143,7 @@ TEST(FixedObstacle, StillWaterStaysStillAndHydrostatic) {
       const double z = (k + 0.5) * h;
       if (x > 0.05 && x < 0.14 && z < 0.07) continue;  // inside or beside the block
       const double expected = rho * g * (level - z);
-      EXPECT_NEAR(sim.pressure_at(x, z), expected, 0.01 * expected) << "x " << x << " z " << z;
+      EXPECT_NEAR(sim.fluid().pressure_at({x, z}), expected, 0.01 * expected)
+          << "x " << x << " z " << z;
     }
 }

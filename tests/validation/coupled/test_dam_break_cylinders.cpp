@@ -13,6 +13,7 @@
 
 #include "case_loader.hpp"
 #include "picdem/coupling/simulation.hpp"
+#include "picdem/dem/dem_solver.hpp"
 
 using namespace picdem;
 
@@ -41,9 +42,10 @@ Outcome run(int layers, double beta) {
     const auto& d = sim.diagnostics();
     if (v0 < 0) v0 = d.fluid_volume;
     o.worst_volume = std::max(o.worst_volume, std::abs(d.fluid_volume - v0) / v0);
-    o.worst_overlap_over_gap = std::max(o.worst_overlap_over_gap, sim.max_contact_overlap() / gap);
+    o.worst_overlap_over_gap =
+        std::max(o.worst_overlap_over_gap, sim.dem()->max_contact_overlap() / gap);
     double ke = 0.0, mass = 0.0, right = -1e300;
-    for (const auto& s : sim.solids()) {
+    for (const auto& s : sim.dem()->gather_all()) {
       ke += 0.5 * s.mass * core::norm2(s.v) + 0.5 * s.inertia * s.omega * s.omega;
       mass += s.mass;
       right = std::max(right, s.x.x + r);

@@ -9,13 +9,18 @@
 
 #include "case_loader.hpp"
 #include "picdem/coupling/simulation.hpp"
+#include "picdem/dem/dem_solver.hpp"
+#include "picdem/fluid/fluid_state.hpp"
+#include "picdem/particles/particle_set.hpp"
 
 using namespace picdem;
 
 namespace {
-core::Vec2 total_momentum(const coupling::Simulation& sim) {
-  core::Vec2 P = sim.fluid_momentum();
-  for (const auto& s : sim.solids()) P += s.mass * s.v;
+// Particles (each of mass particle_mass) + solids, summed over ranks.
+core::Vec2 total_momentum(const coupling::Simulation& sim, const core::Comm& comm,
+                          double particle_mass) {
+  core::Vec2 P = particle_mass * particles::velocity_sum(sim.particles(), comm);
+  for (const auto& s : sim.dem()->gather_all()) P += s.mass * s.v;
   return P;
 }
 }  // namespace
@@ -29,8 +34,9 @@ TEST(MomentumBalance, SinkingDiskInClosedTank) {
   const double h = params.real("grid/cell_size"), rho = 1000.0;
   const core::Vec2 g{0.0, -9.81};
   const double particle_mass = rho * h * h / 4.0;  // 2 x 2 particles per full cell
-  const double solid_mass = sim.solids().at(0).mass;
-  const core::Vec2 P0 = total_momentum(sim), disk0 = solid_mass * sim.solids().at(0).v;
+  const double solid_mass = sim.dem()->gather_all().at(0).mass;
+  const core::Vec2 P0 = total_momentum(sim, comm, particle_mass),
+                   disk0 = solid_mass * sim.dem()->gather_all().at(0).v;
   core::Vec2 impulse;
   long long particles = -1;  // reseeding in the disk's wake adds a few (their momentum counts)
   while (sim.time() < 0.1 - 1e-12) {
@@ -38,10 +44,11 @@ TEST(MomentumBalance, SinkingDiskInClosedTank) {
     const auto& d = sim.diagnostics();
     if (particles < 0) particles = d.particles;
     const double mass = static_cast<double>(d.particles) * particle_mass + solid_mass;
-    impulse += d.dt * (sim.wall_pressure_force() + mass * g);
+    impulse += d.dt * (sim.fluid().wall_pressure_force(fluid::config_from(params)) + mass * g);
   }
-  const auto disk = sim.solids().at(0);
-  const core::Vec2 dP = total_momentum(sim) - P0, ddisk = solid_mass * disk.v - disk0;
+  const auto disk = sim.dem()->gather_all().at(0);
+  const core::Vec2 dP = total_momentum(sim, comm, particle_mass) - P0,
+                   ddisk = solid_mass * disk.v - disk0;
   const core::Vec2 imbalance = dP - impulse;
   if (comm.is_root())
     std::printf(

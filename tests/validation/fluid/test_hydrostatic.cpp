@@ -6,6 +6,7 @@
 
 #include "case_loader.hpp"
 #include "picdem/coupling/simulation.hpp"
+#include "picdem/fluid/fluid_state.hpp"
 
 using namespace picdem;
 
@@ -25,13 +26,13 @@ TEST(Hydrostatic, PressureAndSpuriousCurrentsAfterOneSecond) {
     const int k = static_cast<int>((level - depth_fraction * level) / h);
     const double z = (k + 0.5) * h;
     const double expected = rho * g * (level - z);
-    const double p = sim.pressure_at(x, z);
+    const double p = sim.fluid().pressure_at({x, z});
     const double rel = std::abs(p - expected) / expected;
     worst = std::max(worst, rel);
     EXPECT_LT(rel, 0.01) << "depth " << level - z << " m: p = " << p << ", rho g d = " << expected;
   }
   if (comm.is_root()) std::printf("hydrostatic: worst relative pressure error %.3e\n", worst);
-  const double grid_speed = sim.max_grid_speed();  // collective: on every rank
+  const double grid_speed = sim.fluid().max_grid_speed();  // collective: on every rank
   EXPECT_LT(sim.diagnostics().max_speed, 1e-3);
   EXPECT_LT(grid_speed, 1e-3);
   if (comm.is_root())

@@ -10,11 +10,8 @@
 
 #include "picdem/core/comm.hpp"
 #include "picdem/core/params.hpp"
-#include "picdem/coupling/output.hpp"
 
 namespace picdem::coupling {
-
-struct SimulationState;
 
 /// Version of the file layout; a file of another version is refused with a message.
 constexpr long long kCheckpointFormatVersion = 1;
@@ -61,20 +58,5 @@ std::vector<std::string> case_differences(const std::string& stored_yaml,
 void install_stop_signal_handlers();
 /// True once SIGTERM or SIGUSR1 arrived on this process.
 bool stop_signal_received();
-
-// Used by Simulation (the state is private to the coupling module).
-
-/// Collective: writes the state to `path` (via path.tmp). Environment variable
-/// PICDEM_CHECKPOINT_PAUSE_AT_STEP=N (tests): at step N the writer stops for 60 s between the
-/// complete .tmp file and the rename, after printing "checkpoint paused before commit" on stderr.
-void write_checkpoint(const SimulationState& s, const std::string& path, const Output::Mark& mark);
-/// Collective: replaces the state by the checkpoint's (same or another rank count). Throws
-/// core::InputError for a missing, truncated, corrupted or mismatched file (format version, case).
-Output::Mark read_checkpoint(SimulationState& s, const std::string& path);
-
-/// Collective, after every step: throws core::SolverError naming the step when the step blew
-/// up: a particle moved more than 2 h (CFL far exceeded), or a solid's real boundary overlaps
-/// another solid, a wall or an obstacle (DEM overlap delta beyond the imaginary gap, eq. 19).
-void check_step(const SimulationState& s);
 
 }  // namespace picdem::coupling

@@ -10,6 +10,16 @@
 #include "picdem/core/comm.hpp"
 #include "picdem/core/params.hpp"
 
+namespace picdem::fluid {
+struct FluidState;
+}
+namespace picdem::particles {
+struct ParticleSet;
+}
+namespace picdem::dem {
+class DemSolver;
+}
+
 namespace picdem::coupling {
 
 struct SimulationState;
@@ -69,24 +79,16 @@ class Simulation {
   long long step_count() const;
   const core::Params& params() const;
 
-  /// Pressure at a point, sampled from the cell holding it (the owning rank's value on all ranks).
-  double pressure_at(double x, double z) const;
-  /// Collective: momentum of the fluid per unit depth, sum of the particles' mass x velocity.
-  core::Vec2 fluid_momentum() const;
-  /// Collective: the force of the fluid's pressure on the tank's walls on the fluid, per unit
-  /// depth: the pressure of the cells next to a wall, carried hydrostatically to it (the bottom's
-  /// half cell), times the wall's length in those cells.
-  core::Vec2 wall_pressure_force() const;
-  /// Largest fluid speed on the grid faces next to fluid cells.
-  double max_grid_speed() const;
-  /// Every solid, ordered by id, on every rank.
-  std::vector<core::SolidState> solids() const;
-  /// Height of the free surface (occupancy S = 1/2, free_surface.hpp) in the column holding x:
-  /// the highest crossing from fluid below to air above; NaN when the column holds no fluid.
-  double surface_height(double x) const;
-  /// Largest overlap delta of the imaginary boundaries over all active contacts (eq. 19); the
-  /// real boundaries of two bodies cross when it exceeds the gap (dem/gap_cells x h). 0 if none.
-  double max_contact_overlap() const;
+  // Read-only access to the modules' state (their probes: fluid::FluidState::pressure_at,
+  // wall_pressure_force, max_grid_speed, surface_height; dem::DemSolver::gather_all,
+  // max_contact_overlap; particles::velocity_sum).
+
+  /// The fluid's grid state; throws std::logic_error when the case has no water.
+  const fluid::FluidState& fluid() const;
+  /// This rank's fluid particles (none without water).
+  const particles::ParticleSet& particles() const;
+  /// The DEM solver, or nullptr when the case has no solids.
+  const dem::DemSolver* dem() const;
   /// The current collision and fluid loads on every solid (ordered by id), on every rank.
   std::vector<core::SolidLoads> fluid_loads() const;
 

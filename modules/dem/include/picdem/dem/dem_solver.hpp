@@ -7,6 +7,7 @@
 // rank, for output). The forces on a solid are summed over its partners in a fixed order (tank
 // walls, obstacles, then solids by global id), each pair evaluated with the lower id as body a,
 // so trajectories are bitwise identical for any number of ranks.
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -38,6 +39,24 @@ class DemSolver {
     std::vector<double> x, z, theta, u, w, omega;
     std::vector<std::int64_t> spring_solid, spring_partner;
     std::vector<double> spring;
+
+    /// f(name, array) for every array above, in declaration order: the names of a checkpoint.
+    template <class F>
+    void for_each(F&& f) {
+      visit(*this, f);
+    }
+    template <class F>
+    void for_each(F&& f) const {
+      visit(*this, f);
+    }
+
+   private:
+    template <class S, class F>
+    static void visit(S& s, F& f) {
+      f("id", s.id), f("x", s.x), f("z", s.z), f("theta", s.theta), f("u", s.u), f("w", s.w);
+      f("omega", s.omega), f("spring_solid", s.spring_solid);
+      f("spring_partner", s.spring_partner), f("spring", s.spring);
+    }
   };
 
   /// regions[r]: the box of space rank r owns; tank: the tank (its sides are walls);
@@ -65,6 +84,13 @@ class DemSolver {
   /// The active contacts at the current state, each reported once over all ranks: by the owner
   /// of solid i, where i is the lower id of a solid-solid pair (id_j = -1: wall or obstacle).
   std::vector<Contact> active_contacts() const;
+  /// Collective: the largest overlap delta of the imaginary boundaries over all active contacts
+  /// (eq. 19); the real boundaries cross when it exceeds the gap. 0 without contacts.
+  double max_contact_overlap() const {
+    double m = 0.0;
+    for (const auto& c : active_contacts()) m = std::max(m, c.delta);
+    return comm_.max(m);
+  }
 
   double dt_dem() const { return dt_dem_; }
   int last_subcycles() const { return last_subcycles_; }

@@ -6,6 +6,7 @@
 #include <functional>
 #include <vector>
 
+#include "picdem/core/comm.hpp"
 #include "picdem/core/params.hpp"
 #include "picdem/core/vec2.hpp"
 #include "picdem/grid/grid.hpp"
@@ -56,7 +57,31 @@ struct ParticleSet {
   void keep_if(const std::vector<char>& keep);
   /// Reorders the particles: particle n takes the place of particle order[n].
   void permute(const std::vector<std::size_t>& order);
+
+  /// The arrays a checkpoint keeps (everything but `spec`), in one place: f(name, array) for
+  /// x, z, u, w, cxx, cxz, czx, czz (double) and id (int64), in this order. The order of the
+  /// particles is part of the state: it fixes the order of the sums in P2G.
+  template <class F>
+  void for_each_saved(F&& f) {
+    visit_saved(*this, f);
+  }
+  template <class F>
+  void for_each_saved(F&& f) const {
+    visit_saved(*this, f);
+  }
+
+ private:
+  template <class Set, class F>
+  static void visit_saved(Set& s, F& f) {
+    f("x", s.x), f("z", s.z), f("u", s.u), f("w", s.w);
+    f("cxx", s.cxx), f("cxz", s.cxz), f("czx", s.czx), f("czz", s.czz);
+    f("id", s.id);
+  }
 };
+
+/// Sum of the particles' velocities over all ranks (collective): their momentum per unit
+/// particle mass.
+core::Vec2 velocity_sum(const ParticleSet& particles, const core::Comm& comm);
 
 /// Seeds per_cell_1d^2 jittered particles at rest in every owned cell whose centre satisfies
 /// inside(centre). Positions and ids depend on the cell's global id only: the union over ranks

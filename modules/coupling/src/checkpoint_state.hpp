@@ -1,0 +1,55 @@
+#pragma once
+// The run's state <-> a checkpoint file (layout in doc/restart.md). Each module lists the arrays
+// it keeps (particles::ParticleSet::for_each_saved, fluid::FluidState::for_each_saved,
+// dem::DemSolver::Snapshot::for_each); this file only names the groups, writes them and puts
+// them back, on the same or another rank layout. Private to the coupling module.
+#include <string>
+
+#include "picdem/core/comm.hpp"
+#include "picdem/core/params.hpp"
+#include "picdem/coupling/output.hpp"
+#include "picdem/coupling/simulation.hpp"
+#include "picdem/dem/dem_solver.hpp"
+#include "picdem/fluid/fluid_state.hpp"
+#include "picdem/grid/grid.hpp"
+#include "picdem/particles/particle_set.hpp"
+
+namespace picdem::coupling {
+
+/// The run's clock and records, stored as attributes beside the modules' arrays.
+struct CheckpointHeader {
+  double t = 0.0;
+  long long step = 0;
+  Diagnostics diag;
+  Output::Mark mark;
+};
+
+/// The modules whose state a checkpoint holds. fluid: nullptr in a case without water;
+/// dem: nullptr without solids.
+struct CheckpointParts {
+  const core::Comm& comm;
+  const core::Params& params;
+  const grid::Decomposition& decomposition;
+  particles::ParticleSet& particles;
+  fluid::FluidState* fluid;
+  dem::DemSolver* dem;
+};
+
+/// Collective: writes `head` and the parts to `path` (via path.tmp). Environment variable
+/// PICDEM_CHECKPOINT_PAUSE_AT_STEP=N (tests): at step N the writer stops for 60 s between the
+/// complete .tmp file and the rename, after printing "checkpoint paused before commit" on stderr.
+void write_checkpoint(const CheckpointParts& parts, const CheckpointHeader& head,
+                      const std::string& path);
+/// Collective: replaces the parts' state by the checkpoint's (same or another rank count) and
+/// returns its header. Throws core::InputError for a missing, truncated, corrupted or mismatched
+/// file (format version, case).
+CheckpointHeader read_checkpoint(const CheckpointParts& parts, const std::string& path);
+
+/// Collective, after every step (g: its diagnostics): throws core::SolverError naming the step
+/// when the step blew up: a particle moved more than 2 h (CFL far exceeded), or a solid's real
+/// boundary overlaps another solid, a wall or an obstacle (DEM overlap delta beyond the
+/// imaginary gap, eq. 19).
+void check_step(const Diagnostics& g, double h, bool has_fluid, const dem::DemSolver* dem,
+                const core::Comm& comm);
+
+}  // namespace picdem::coupling
