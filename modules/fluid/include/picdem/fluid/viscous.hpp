@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "picdem/core/vec2.hpp"
+#include "picdem/fluid/fluid.hpp"
 
 namespace picdem::fluid {
 
@@ -112,6 +113,24 @@ struct ViscousLoads {
 ViscousLoads viscous_loads(const ViscousStencil& su, const ViscousStencil& sw,
                            const std::vector<double>& u, const std::vector<double>& w, double mu,
                            const std::vector<ViscousBody>& bodies);
+
+/// Implicit viscosity on the step's fields, in place of apply_viscosity: gathers u, w and the
+/// cell states of all ranks, builds the stencils (unknowns: nodes next to a Fluid cell and outside
+/// every body; walls no-slip or free-slip from cfg), solves both components with
+/// solve_viscous_implicit (f = 0: gravity is applied before), writes the owned values back,
+/// forwards the halo and enforces the walls. Returns the CG iterations (both components) and the
+/// viscous loads of the step (from beta u_new + (1 - beta) u_old). Every rank solves the whole
+/// grid (replicated): meant for one rank or small grids until the rows are distributed.
+struct ViscousStepResult {
+  int iterations = 0;
+  ViscousLoads loads;
+};
+ViscousStepResult apply_viscosity_implicit(grid::FaceField& u, grid::FaceField& w,
+                                           const CellStates& cells, double dt,
+                                           const FluidConfig& cfg, const grid::Decomposition& d,
+                                           const grid::Halo& halo,
+                                           const std::vector<ViscousBody>& bodies,
+                                           double beta = 1.0);
 
 /// Stability limit of explicit viscosity on a uniform grid: dt <= h^2 / (4 nu) (infinity for
 /// nu = 0).

@@ -1,0 +1,95 @@
+// Implicit viscosity on the step's distributed fields (viscous.hpp): gather, the stencils of
+// viscous_operator.cpp, the solve of viscous_solver.cpp, scatter.
+#include <algorithm>
+
+#include "picdem/core/timer.hpp"
+#include "picdem/fluid/viscous.hpp"
+
+namespace picdem::fluid {
+
+namespace {
+
+/// The whole grid's values of a staggered field (node id i + ni k over spec.extent), summed
+/// from every rank's owned samples.
+std::vector<double> gather(const grid::GridArray<double>& f, const grid::Decomposition& d) {
+  const core::IndexBox ext = d.spec().extent(f.stagger());
+  const int ni = ext.i1 - ext.i0;
+  std::vector<double> all(static_cast<std::size_t>(ni) * static_cast<std::size_t>(ext.k1 - ext.k0),
+                          0.0);
+  const auto& b = f.owned();
+  for (int k = b.k0; k < b.k1; ++k)
+    for (int i = b.i0; i < b.i1; ++i) all[static_cast<std::size_t>(i + ni * k)] = f(i, k);
+  d.comm().sum_in_place(all);
+  return all;
+}
+
+void scatter(const std::vector<double>& all, grid::GridArray<double>& f,
+             const grid::Decomposition& d) {
+  const core::IndexBox ext = d.spec().extent(f.stagger());
+  const int ni = ext.i1 - ext.i0;
+  const auto& b = f.owned();
+  for (int k = b.k0; k < b.k1; ++k)
+    for (int i = b.i0; i < b.i1; ++i) f(i, k) = all[static_cast<std::size_t>(i + ni * k)];
+}
+
+/// 1 on nodes of `component` next to a Fluid cell (whole grid, node ids as in the stencil).
+std::vector<unsigned char> fluid_node_mask(int component, const std::vector<double>& cell_state,
+                                           const grid::GridSpec& g) {
+  const int ni = component == 0 ? g.nx + 1 : g.nx, nk = component == 0 ? g.nz : g.nz + 1;
+  auto fluid = [&](int i, int k) {
+    return i >= 0 && k >= 0 && i < g.nx && k < g.nz &&
+           cell_state[static_cast<std::size_t>(i + g.nx * k)] ==
+               static_cast<double>(grid::CellState::Fluid);
+  };
+  std::vector<unsigned char> mask(static_cast<std::size_t>(ni) * static_cast<std::size_t>(nk), 0);
+  for (int k = 0; k < nk; ++k)
+    for (int i = 0; i < ni; ++i) {
+      const bool next =
+          component == 0 ? fluid(i - 1, k) || fluid(i, k) : fluid(i, k - 1) || fluid(i, k);
+      mask[static_cast<std::size_t>(i + ni * k)] = next ? 1 : 0;
+    }
+  return mask;
+}
+
+}  // namespace
+
+ViscousStepResult apply_viscosity_implicit(grid::FaceField& u, grid::FaceField& w,
+                                           const CellStates& cells, double dt,
+                                           const FluidConfig& cfg, const grid::Decomposition& d,
+                                           const grid::Halo& halo,
+                                           const std::vector<ViscousBody>& bodies, double beta) {
+  core::ScopedTimer timer("fluid: implicit viscosity");
+  ViscousStepResult result;
+  if (cfg.nu == 0.0) return result;
+  const grid::GridSpec& g = d.spec();
+  std::vector<double> states(static_cast<std::size_t>(g.nx) * static_cast<std::size_t>(g.nz), 0.0);
+  const core::IndexBox own = d.owned_cells();
+  for (int k = own.k0; k < own.k1; ++k)
+    for (int i = own.i0; i < own.i1; ++i)
+      states[static_cast<std::size_t>(i + g.nx * k)] = static_cast<double>(cells(i, k));
+  d.comm().sum_in_place(states);
+  const ViscousGrid vg{g.origin, g.h, g.nx, g.nz};
+  const ViscousWalls walls{cfg.no_slip ? WallKind::NoSlip : WallKind::FreeSlip, {}};
+  const std::vector<unsigned char> mask_u = fluid_node_mask(0, states, g);
+  const std::vector<unsigned char> mask_w = fluid_node_mask(1, states, g);
+  const ViscousStencil su = build_viscous_stencil(0, vg, bodies, walls, &mask_u);
+  const ViscousStencil sw = build_viscous_stencil(1, vg, bodies, walls, &mask_w);
+  std::vector<double> ug = gather(u, d), wg = gather(w, d);
+  const std::vector<double> u_old = ug, w_old = wg;
+  result.iterations +=
+      solve_viscous_implicit(su, cfg.nu, dt, std::vector<double>(ug.size(), 0.0), ug, 1e-12, beta);
+  result.iterations +=
+      solve_viscous_implicit(sw, cfg.nu, dt, std::vector<double>(wg.size(), 0.0), wg, 1e-12, beta);
+  std::vector<double> ub(ug.size()), wb(wg.size());
+  for (std::size_t n = 0; n < ug.size(); ++n) ub[n] = beta * ug[n] + (1.0 - beta) * u_old[n];
+  for (std::size_t n = 0; n < wg.size(); ++n) wb[n] = beta * wg[n] + (1.0 - beta) * w_old[n];
+  result.loads = viscous_loads(su, sw, ub, wb, cfg.rho * cfg.nu, bodies);
+  scatter(ug, u, d);
+  scatter(wg, w, d);
+  halo.forward(u);
+  halo.forward(w);
+  enforce_walls(u, w, cfg, d);
+  return result;
+}
+
+}  // namespace picdem::fluid

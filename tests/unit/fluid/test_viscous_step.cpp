@@ -1,0 +1,67 @@
+// apply_viscosity_implicit on the step's distributed fields (1 and 2 ranks): without bodies its
+// stencil is apply_viscosity's (no-slip ghost -u = a wall at h/2, free-slip and free surface zero
+// gradient), so one explicit step of apply_viscosity with -dt taken from the implicit result
+// gives back the old velocity on every face between two fluid cells, to the solver's tolerance,
+// with air above a fluid block (the fluid-node mask) and with either wall condition.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "picdem/core/rng.hpp"
+#include "picdem/fluid/viscous.hpp"
+
+using namespace picdem;
+using namespace picdem::grid;
+
+class ViscousStepTest : public ::testing::TestWithParam<bool> {};
+
+TEST_P(ViscousStepTest, BackwardEulerInvertsApplyViscosity) {
+  GridSpec s;
+  s.nx = 14, s.nz = 11, s.h = 0.1;
+  core::Comm comm;
+  Decomposition d(s, comm, 1);
+  Halo halo(d);
+  fluid::FluidConfig cfg;
+  cfg.no_slip = GetParam();
+  cfg.nu = 0.02;
+  cfg.h = s.h;
+  // Fluid below k = 8 (air above), a dry notch at the right.
+  fluid::CellStates cells(d, Stagger::Cell, static_cast<signed char>(CellState::Air));
+  const auto& cb = cells.storage();
+  for (int k = cb.k0; k < cb.k1; ++k)
+    for (int i = cb.i0; i < cb.i1; ++i)
+      if (k < 8 && !(i > 10 && k > 5)) cells(i, k) = static_cast<signed char>(CellState::Fluid);
+  FaceField u(d, Stagger::FaceX, 0.0), w(d, Stagger::FaceZ, 0.0);
+  for (FaceField* f : {&u, &w}) {
+    const auto& b = f->owned();
+    for (int k = b.k0; k < b.k1; ++k)
+      for (int i = b.i0; i < b.i1; ++i) (*f)(i, k) = core::uniform01(3, i + 50, k + 50) - 0.5;
+    halo.forward(*f);
+  }
+  fluid::enforce_walls(u, w, cfg, d);
+  const FaceField u0 = u, w0 = w;
+  const double dt = 0.2;  // nu dt / h^2 = 0.4: beyond the explicit limit 0.25
+  const auto r = fluid::apply_viscosity_implicit(u, w, cells, dt, cfg, d, halo, {});
+  EXPECT_GT(r.iterations, 0);
+  fluid::apply_viscosity(u, w, cells, -dt, cfg, d, halo);
+  auto fluid_cell = [&](int i, int k) {
+    return i >= 0 && k >= 0 && i < s.nx && k < s.nz &&
+           cells(i, k) == static_cast<signed char>(CellState::Fluid);
+  };
+  double worst = 0.0;
+  int checked = 0;
+  const auto& bu = u.owned();
+  for (int k = bu.k0; k < bu.k1; ++k)
+    for (int i = std::max(bu.i0, 1); i < std::min(bu.i1, s.nx); ++i)
+      if (fluid_cell(i - 1, k) && fluid_cell(i, k))
+        worst = std::max(worst, std::abs(u(i, k) - u0(i, k))), ++checked;
+  const auto& bw = w.owned();
+  for (int k = std::max(bw.k0, 1); k < std::min(bw.k1, s.nz); ++k)
+    for (int i = bw.i0; i < bw.i1; ++i)
+      if (fluid_cell(i, k - 1) && fluid_cell(i, k))
+        worst = std::max(worst, std::abs(w(i, k) - w0(i, k))), ++checked;
+  EXPECT_GT(comm.sum(static_cast<long long>(checked)), 100);
+  EXPECT_LT(worst, 1e-9);
+}
+
+INSTANTIATE_TEST_SUITE_P(Walls, ViscousStepTest, ::testing::Values(false, true));
