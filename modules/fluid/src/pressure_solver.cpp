@@ -7,6 +7,7 @@
 #include <BelosLinearProblem.hpp>
 #include <BelosPseudoBlockCGSolMgr.hpp>
 #include <BelosTpetraAdapter.hpp>
+#include <Ifpack2_Factory.hpp>
 #include <MueLu_CreateTpetraPreconditioner.hpp>
 #include <MueLu_MasterList.hpp>
 #include <Tpetra_Core.hpp>
@@ -91,6 +92,14 @@ void validate(const SolverSettings& s) {
     } catch (const std::exception& e) {
       throw core::InputError(std::string(key) + ": MueLu rejected the settings: " + e.what());
     }
+    // The smoother is built by Ifpack2 only when the hierarchy is: its name checked now.
+    for (const char* k : {"smoother: type", "smoother: pre type", "smoother: post type"})
+      if (top.isType<std::string>(k) &&
+          !Ifpack2::Factory::isSupported<Tpetra::CrsMatrix<>>(top.get<std::string>(k)))
+        throw core::InputError(std::string("key '") + key + "/" + k + "' = '" +
+                               top.get<std::string>(k) +
+                               "' is not allowed: Ifpack2 provides no such smoother (e.g. "
+                               "CHEBYSHEV, RELAXATION, ILUT, RILUK, SCHWARZ)");
   }
   try {
     Belos::PseudoBlockCGSolMgr<double, MV, OP> cg;
@@ -198,6 +207,10 @@ SolveStats solve_rows(detail::TpetraSystem& ts, const grid::Decomposition& d,
 }
 
 }  // namespace
+
+void check_solver_settings(const core::Params& params) {
+  settings_from(params);
+}
 
 struct PressureSolver::Impl {
   const grid::Decomposition& d;

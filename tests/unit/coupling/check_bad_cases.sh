@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Every file in bad_cases/ must stop `picdem --check` with exit code 2 and the message in its
+# Every file in bad_cases/ must stop `picdem --check` (and a few a real launch) with exit code 2 and the message in its
 # .expect file, on the given number of ranks (never a crash or a hang).
 # usage: check_bad_cases.sh PICDEM RANKS MPIEXEC...
 set -u
@@ -24,6 +24,14 @@ for f in "$dir"/*.yaml; do
   name=$(basename "$f" .yaml)
   check "$name" "$(cat "$dir/$name.expect")" "$@" -n "$ranks" "$picdem" --check "$f"
 done
+# A real launch stops the same way, before anything runs.
+out_dir=$(mktemp -d)
+for name in disks_overlap disk_outside_tank disk_in_obstacle cell_size_absurd muelu_bad_smoother \
+  belos_wrong_type; do
+  check "run_$name" "$(cat "$dir/$name.expect")" "$@" -n "$ranks" "$picdem" "$dir/$name.yaml" \
+    --output "$out_dir/$name" --max-steps 1
+done
+rm -rf "$out_dir"
 check missing_file "cannot open the case file" "$@" -n "$ranks" "$picdem" --check "$dir/no_such_file.yaml"
 check bad_override "key 'fluid/density' = -1 is not allowed: must be > 0" \
   "$@" -n "$ranks" "$picdem" --check "$dir/../good_case.yaml" --set fluid/density=-1

@@ -102,6 +102,11 @@ std::vector<core::SolidLoads> pressure_loads(const std::vector<SolidCoupling>& c
                                              const grid::CellField& p, const CellStates& cells,
                                              const grid::Decomposition& d);
 
+/// Checks solver/Belos, solver/MueLu and its merged lists with Trilinos' validators, and the
+/// smoother names with Ifpack2's factory, as the first PressureSolver would; throws
+/// core::InputError naming the list. For checks before the run.
+void check_solver_settings(const core::Params& params);
+
 /// Initialises MPI (if needed), Kokkos and Tpetra for the life of main(); create one before any
 /// PressureSolver::solve (Tpetra::ScopeGuard underneath).
 class LinearAlgebraScope {

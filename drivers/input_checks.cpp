@@ -1,0 +1,130 @@
+#include "input_checks.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include "picdem/core/error.hpp"
+#include "picdem/fluid/pressure_solver.hpp"
+#include "solid_placement.hpp"
+
+namespace picdem::driver {
+
+namespace {
+
+// Sizes measured with /usr/bin/time's maximum resident size on the 0.2 m x 0.1 m tank of
+// tests/unit/coupling/good_case.yaml, 2 steps, 5,000 to 320,000 cells, 2 x 2 and 3 x 3
+// particles per cell (doc/cases.md): about 160 B for every cell, 580 B more for every cell of
+// water (the pressure system, MueLu's hierarchy, the water's fields) and 70 B per particle;
+// rounded up to the figures below. The process itself (MPI, Kokkos, libraries) takes 80 MB.
+constexpr double bytes_per_cell = 200.0;
+constexpr double bytes_per_water_cell = 700.0;
+constexpr double bytes_per_particle = 100.0;
+constexpr double bytes_per_process = 80e6;
+
+std::string gb(double bytes) {
+  std::ostringstream s;
+  s.precision(3);
+  s << bytes / 1e9 << " GB";
+  return s.str();
+}
+
+/// The area of the water regions at t = 0 (their overlaps counted twice: an upper bound).
+double water_area(const core::Params& p) {
+  const auto o = p.reals("grid/origin");
+  double area = 0.0;
+  for (const auto& name : p.sublist_names("water")) {
+    const auto w = p.sub("water/" + name);
+    if (w.string("type") == "box") {
+      const auto x = w.reals("x"), z = w.reals("z");
+      area += (x[1] - x[0]) * (z[1] - z[0]);
+    } else {
+      area += (w.real("z") - o[1]) * p.real("grid/length");
+    }
+  }
+  return std::min(area, p.real("grid/length") * p.real("grid/height"));
+}
+
+int ranks_on_this_node(const core::Comm& comm) {
+  MPI_Comm node;
+  MPI_Comm_split_type(comm.raw(), MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+  int n = 1;
+  MPI_Comm_size(node, &n);
+  MPI_Comm_free(&node);
+  return n;
+}
+
+double mem_total_bytes() {
+  std::ifstream in("/proc/meminfo");
+  std::string key;
+  double kb = 0.0;
+  while (in >> key) {
+    if (key == "MemTotal:" && in >> kb) return kb * 1024.0;
+    std::getline(in, key);
+  }
+  return 0.0;  // unknown: no limit
+}
+
+void check_memory(const core::Comm& comm, const core::Params& params,
+                  std::vector<std::string>& errors) {
+  const double need = memory_estimate_bytes(params, comm.size());
+  const double limit = memory_limit_bytes(comm, params);
+  if (!(limit > 0.0) || need <= limit) return;
+  const double h = params.real("grid/cell_size");
+  const double cells = params.real("grid/length") / h * (params.real("grid/height") / h);
+  std::ostringstream m;
+  m.precision(4);
+  m << "the case needs about " << gb(need) << " per rank on " << comm.size() << " rank(s) ("
+    << cells << " cells of grid/cell_size = " << h
+    << " m, particles/per_cell_1d = " << params.integer("particles/per_cell_1d")
+    << "), more than the " << gb(limit) << " a rank may use ("
+    << (params.real("run/memory_limit_gb") > 0.0 ? "run/memory_limit_gb"
+                                                 : "MemTotal of /proc/meminfo / ranks on the node")
+    << "); allowed: a larger grid/cell_size, fewer particles, more ranks, or "
+       "run/memory_limit_gb set to what the ranks may really use";
+  errors.push_back(m.str());
+}
+
+}  // namespace
+
+void declare_check_parameters(core::ParamSchema& schema) {
+  schema.section("run", "Checks made before the run (doc/cases.md).");
+  schema
+      .real("run/memory_limit_gb", 0.0,
+            "memory a rank may use [GB]; a case whose estimate exceeds it is refused "
+            "(0: MemTotal of /proc/meminfo divided by the ranks on the node)")
+      .non_negative();
+}
+
+double memory_estimate_bytes(const core::Params& params, int ranks) {
+  const double h = params.real("grid/cell_size");
+  const double cells = params.real("grid/length") / h * (params.real("grid/height") / h);
+  const double water_cells = water_area(params) / (h * h);
+  const double n1 = static_cast<double>(params.integer("particles/per_cell_1d"));
+  const double particles = water_cells * n1 * n1;
+  const double shared =
+      cells * bytes_per_cell + water_cells * bytes_per_water_cell + particles * bytes_per_particle;
+  return bytes_per_process + shared / ranks;
+}
+
+double memory_limit_bytes(const core::Comm& comm, const core::Params& params) {
+  double limit = params.real("run/memory_limit_gb") * 1e9;
+  if (!(limit > 0.0)) limit = mem_total_bytes() / ranks_on_this_node(comm);
+  return -comm.max(-limit);  // the smallest over the ranks: the same verdict everywhere
+}
+
+void check_case(const core::Comm& comm, const core::Params& params) {
+  std::vector<std::string> errors;
+  try {
+    fluid::check_solver_settings(params);
+  } catch (const core::InputError& e) {
+    errors.push_back(e.what());
+  }
+  check_memory(comm, params, errors);
+  for (auto& e : check_solid_placement(params)) errors.push_back(std::move(e));
+  if (errors.empty()) return;
+  std::string text = errors.size() == 1 ? "" : std::to_string(errors.size()) + " problems:\n";
+  for (std::size_t n = 0; n < errors.size(); ++n) text += (n ? "\n" : "") + errors[n];
+  throw core::InputError(text);
+}
+
+}  // namespace picdem::driver

@@ -1,0 +1,250 @@
+#include "solid_placement.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <sstream>
+#include <variant>
+
+#include "picdem/core/error.hpp"
+#include "picdem/dem/contact_geometry.hpp"
+#include "picdem/geometry/obstacles.hpp"
+#include "picdem/geometry/shape_registry.hpp"
+
+namespace picdem::driver {
+
+using core::Vec2;
+using geometry::Arc;
+using geometry::BoundaryPiece;
+using geometry::Segment;
+
+namespace {
+
+/// A solid or an obstacle polygon in the world frame.
+struct Outline {
+  std::string what;  ///< "solids/NAME[k] (id N)" or "obstacles/NAME"
+  std::vector<BoundaryPiece> world;
+  core::Box2 box;
+  double circle_radius = 0.0;  ///< > 0: a full circle centred at `centre` (closed form)
+  Vec2 centre;
+  std::function<bool(const Vec2&)> inside;  ///< closed region test in the world frame
+  double size() const { return std::max(box.hi.x - box.lo.x, box.hi.z - box.lo.z); }
+};
+
+core::Box2 box_of(const std::vector<BoundaryPiece>& world) {
+  const Vec2 hi{dem::support_point(world, {1.0, 0.0}).x, dem::support_point(world, {0.0, 1.0}).z};
+  const Vec2 lo{dem::support_point(world, {-1.0, 0.0}).x, dem::support_point(world, {0.0, -1.0}).z};
+  return {lo, hi};
+}
+
+/// Points along every piece (16 per piece and its end), where overlap depths are measured.
+std::vector<Vec2> samples(const std::vector<BoundaryPiece>& world) {
+  constexpr int per_piece = 16;
+  std::vector<Vec2> out;
+  for (const auto& piece : world) {
+    for (int k = 0; k <= per_piece; ++k) {
+      const double t = static_cast<double>(k) / per_piece;
+      if (const auto* s = std::get_if<Segment>(&piece)) {
+        out.push_back(s->a + t * (s->b - s->a));
+      } else {
+        const auto& a = std::get<Arc>(piece);
+        const double phi = a.phi0 + t * (a.phi1 - a.phi0);
+        out.push_back(a.centre + a.radius * Vec2{std::cos(phi), std::sin(phi)});
+      }
+    }
+  }
+  return out;
+}
+
+double distance_to(const std::vector<BoundaryPiece>& world, const Vec2& p) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const auto& piece : world) {
+    const Vec2 q = std::holds_alternative<Segment>(piece)
+                       ? dem::closest_on_segment(std::get<Segment>(piece), p)
+                       : dem::closest_on_arc(std::get<Arc>(piece), p);
+    best = std::min(best, core::norm(q - p));
+  }
+  return best;
+}
+
+/// How deep the deepest sample of one outline lies inside the other [m] (0: none inside). The
+/// samples: 16 points along every piece, each outline's support point towards the other's box
+/// centre, and the closest points `cp`.
+double sampled_depth(const Outline& a, const Outline& b, const dem::ClosestPoints& cp) {
+  auto centre = [](const Outline& o) { return 0.5 * (o.box.lo + o.box.hi); };
+  double depth = 0.0;
+  for (const auto& [from, into] : {std::pair{&a, &b}, std::pair{&b, &a}}) {
+    auto points = samples(from->world);
+    const Vec2 d = centre(*into) - centre(*from);
+    if (core::norm(d) > 0.0) points.push_back(dem::support_point(from->world, d / core::norm(d)));
+    points.push_back(from == &a ? cp.on_a : cp.on_b);
+    for (const Vec2& p : points)
+      if (into->inside(p)) depth = std::max(depth, distance_to(into->world, p));
+  }
+  return depth;
+}
+
+/// The overlap depth of two outlines [m]; 0 when they are apart or only touch. Circles in closed
+/// form (r_a + r_b - d); otherwise the deepest sample of one outline inside the other, measured
+/// with the DEM's exact closest points on segments and arcs (contact_geometry.hpp). An outline
+/// wholly inside the other counts (its samples are inside).
+double overlap_depth(const Outline& a, const Outline& b) {
+  if (a.circle_radius > 0.0 && b.circle_radius > 0.0)
+    return a.circle_radius + b.circle_radius - core::norm(a.centre - b.centre);
+  return sampled_depth(a, b, dem::closest_points(a.world, b.world));
+}
+
+bool in_polygon(const std::vector<Vec2>& poly, const Vec2& p) {
+  bool in = false;
+  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
+    const Vec2 &u = poly[i], &v = poly[j];
+    if ((u.z > p.z) != (v.z > p.z) && p.x < u.x + (p.z - u.z) * (v.x - u.x) / (v.z - u.z)) in = !in;
+  }
+  return in;
+}
+
+std::vector<Outline> solid_outlines(const core::Params& params) {
+  std::vector<Outline> out;
+  if (!params.has("solids")) return out;
+  geometry::BuildContext ctx;  // as dem::solids_from builds them
+  ctx.gap = params.real("dem/gap_cells") * params.real("grid/cell_size");
+  for (const auto& name : params.sublist_names("solids")) {
+    const core::Params s = params.sub("solids/" + name);
+    std::vector<geometry::PlacedShape> placed;
+    try {
+      placed = geometry::shape_type(s.string("type")).build(s, ctx);
+    } catch (const core::InputError& e) {
+      throw core::InputError("solids/" + name + ": " + e.what());
+    }
+    for (std::size_t k = 0; k < placed.size(); ++k) {
+      Outline o;
+      o.what = "solids/" + name + (placed.size() > 1 ? "[" + std::to_string(k) + "]" : "") +
+               " (id " + std::to_string(out.size()) + ")";
+      const auto shape = placed[k].shape;
+      const auto pose = placed[k].pose;
+      o.world = dem::to_world(shape->boundary(), pose);
+      o.circle_radius = shape->fast_paths().centred_circle_radius;
+      o.centre = pose.x;
+      o.box = box_of(o.world);
+      o.inside = [shape, pose](const Vec2& p) { return shape->contains(pose.to_body(p)); };
+      out.push_back(std::move(o));
+    }
+  }
+  return out;
+}
+
+std::vector<Outline> obstacle_outlines(const core::Params& params) {
+  std::vector<Outline> out;
+  for (const auto& obstacle : geometry::obstacles_from(params)) {
+    for (const auto& poly : obstacle.polygons) {
+      Outline o;
+      o.what = "obstacles/" + obstacle.name;
+      for (std::size_t i = 0; i < poly.size(); ++i)
+        o.world.emplace_back(Segment{poly[i], poly[(i + 1) % poly.size()]});
+      o.box = box_of(o.world);
+      o.inside = [poly](const Vec2& p) { return in_polygon(poly, p); };
+      out.push_back(std::move(o));
+    }
+  }
+  return out;
+}
+
+std::string fmt(double v) {
+  std::ostringstream s;
+  s.precision(6);
+  s << v;
+  return s.str();
+}
+
+std::string overlap_message(const Outline& a, const Outline& b, double depth) {
+  return a.what + " and " + b.what + " overlap by " + fmt(depth) +
+         " m; allowed: real boundaries apart or touching (distance >= 0)";
+}
+
+/// Calls f(i, j) once for every pair i < j of outlines whose boxes overlap, through a grid of
+/// buckets of the median solid size (at most about 4 buckets per solid): a pair is visited in the
+/// bucket holding the low corner of its boxes' intersection.
+void box_pairs(const std::vector<Outline>& s,
+               const std::function<void(std::size_t, std::size_t)>& f) {
+  if (s.size() < 2) return;
+  core::Box2 all = s[0].box;
+  std::vector<double> sizes;
+  for (const auto& o : s) {
+    all.lo = {std::min(all.lo.x, o.box.lo.x), std::min(all.lo.z, o.box.lo.z)};
+    all.hi = {std::max(all.hi.x, o.box.hi.x), std::max(all.hi.z, o.box.hi.z)};
+    sizes.push_back(o.size());
+  }
+  std::nth_element(sizes.begin(), sizes.begin() + sizes.size() / 2, sizes.end());
+  const double w = all.hi.x - all.lo.x, hgt = all.hi.z - all.lo.z;
+  double c = std::max(sizes[sizes.size() / 2], 1e-12 * std::max(w, hgt));
+  const double max_buckets = 4.0 * static_cast<double>(s.size()) + 16.0;
+  while ((w / c + 1.0) * (hgt / c + 1.0) > max_buckets) c *= 1.5;
+  const int nx = static_cast<int>(w / c) + 1, nz = static_cast<int>(hgt / c) + 1;
+  auto ix = [&](double x) { return std::clamp(static_cast<int>((x - all.lo.x) / c), 0, nx - 1); };
+  auto iz = [&](double z) { return std::clamp(static_cast<int>((z - all.lo.z) / c), 0, nz - 1); };
+  std::vector<std::vector<std::size_t>> buckets(static_cast<std::size_t>(nx) * nz);
+  for (std::size_t n = 0; n < s.size(); ++n)
+    for (int k = iz(s[n].box.lo.z); k <= iz(s[n].box.hi.z); ++k)
+      for (int i = ix(s[n].box.lo.x); i <= ix(s[n].box.hi.x); ++i)
+        buckets[static_cast<std::size_t>(k) * nx + i].push_back(n);
+  for (int k = 0; k < nz; ++k)
+    for (int i = 0; i < nx; ++i) {
+      const auto& b = buckets[static_cast<std::size_t>(k) * nx + i];
+      for (std::size_t p = 0; p < b.size(); ++p)
+        for (std::size_t q = p + 1; q < b.size(); ++q) {
+          const core::Box2 &u = s[b[p]].box, &v = s[b[q]].box;
+          if (!u.overlaps(v)) continue;
+          if (ix(std::max(u.lo.x, v.lo.x)) != i || iz(std::max(u.lo.z, v.lo.z)) != k) continue;
+          f(std::min(b[p], b[q]), std::max(b[p], b[q]));
+        }
+    }
+}
+
+void check_in_tank(const core::Params& params, const std::vector<Outline>& solids,
+                   std::vector<std::string>& errors) {
+  const auto o = params.reals("grid/origin");
+  const core::Box2 tank{{o[0], o[1]},
+                        {o[0] + params.real("grid/length"), o[1] + params.real("grid/height")}};
+  for (const auto& s : solids) {
+    const double out = std::max({tank.lo.x - s.box.lo.x, s.box.hi.x - tank.hi.x,
+                                 tank.lo.z - s.box.lo.z, s.box.hi.z - tank.hi.z});
+    if (out <= 0.0) continue;
+    errors.push_back(s.what + " reaches " + fmt(out) +
+                     " m outside the tank: its outline spans x in [" + fmt(s.box.lo.x) + ", " +
+                     fmt(s.box.hi.x) + "], z in [" + fmt(s.box.lo.z) + ", " + fmt(s.box.hi.z) +
+                     "]; allowed: inside the tank x in [" + fmt(tank.lo.x) + ", " + fmt(tank.hi.x) +
+                     "], z in [" + fmt(tank.lo.z) + ", " + fmt(tank.hi.z) +
+                     "] (grid/origin, grid/length, grid/height), touching a wall "
+                     "at most");
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> check_solid_placement(const core::Params& params,
+                                               std::size_t max_messages) {
+  std::vector<std::string> errors;
+  const auto solids = solid_outlines(params);
+  check_in_tank(params, solids, errors);
+  box_pairs(solids, [&](std::size_t i, std::size_t j) {
+    const double depth = overlap_depth(solids[i], solids[j]);
+    if (depth > 1e-9 * std::max(solids[i].size(), solids[j].size()))
+      errors.push_back(overlap_message(solids[i], solids[j], depth));
+  });
+  const auto obstacles = obstacle_outlines(params);
+  for (const auto& s : solids)
+    for (const auto& ob : obstacles) {
+      if (!s.box.overlaps(ob.box)) continue;
+      const double depth = overlap_depth(s, ob);
+      if (depth > 1e-9 * std::max(s.size(), ob.size()))
+        errors.push_back(overlap_message(s, ob, depth));
+    }
+  if (errors.size() > max_messages) {
+    const std::size_t more = errors.size() - max_messages;
+    errors.resize(max_messages);
+    errors.push_back("... and " + std::to_string(more) + " more misplaced solids or overlaps");
+  }
+  return errors;
+}
+
+}  // namespace picdem::driver
