@@ -112,6 +112,47 @@ double memory_limit_bytes(const core::Comm& comm, const core::Params& params) {
   return -comm.max(-limit);  // the smallest over the ranks: the same verdict everywhere
 }
 
+std::string checks_markdown() {
+  return R"(## Checks before the run
+
+`picdem CASE.yaml` and `picdem --check CASE.yaml` read the case the same way on every rank and
+stop before anything is computed, with exit code 2 and a message naming the key (or the solid),
+the value and what is allowed, when:
+
+- a key is unknown (misspelt), of the wrong type, out of its range, or a required key is missing;
+  a `solids` or `water` entry has an unknown `type`; a vertex list is odd, too short, clockwise
+  or not simple (the builder's message, prefixed with `solids/NAME`);
+- a solid's outline reaches outside the tank (`grid/origin`, `grid/length`, `grid/height`): its
+  exact extent (support points of its segments and arcs) is compared with the walls; touching a
+  wall is allowed;
+- two solids, or a solid and an obstacle polygon, overlap. The rule: real boundaries may touch
+  (distance >= 0), so the shipped cylinder stacks, placed at exactly the DEM gap from each other
+  and the walls, pass. Solids are named by their entry and id (`solids/stack[4] (id 4)`, the k-th
+  shape of a generator), obstacles by their entry. Two circles: depth r_a + r_b - d in closed
+  form. Other shapes: the depth is that of the deepest point of one outline inside the other
+  (16 points along each segment or arc, the support point towards the other and the closest
+  points of the DEM's contact geometry), measured with the exact closest points on segments and
+  arcs; an outline wholly inside the other counts. A crossing shallower than the spacing of those
+  points can pass (the DEM then pushes the solids apart). Depths below 1e-9 of the larger size
+  are round-off. Candidate pairs come from a grid of buckets of the median solid size
+  (O(N)): 100,014 cylinders are checked in about 0.1 s;
+- water regions reach outside the tank or are empty;
+- `solver/Belos`, `solver/MueLu` (and the lists merged from `solver/MueLu_solids`,
+  `solver/MueLu_one_level`) hold a key or a type that Trilinos' own validators reject, or a
+  `smoother: type` Ifpack2 does not provide (the smoother and coarse sublists' own keys are
+  checked by Ifpack2/Amesos2 when the first hierarchy is built);
+- the estimated memory of a rank exceeds what it may use: `run/memory_limit_gb`, or, when 0,
+  MemTotal of /proc/meminfo divided by the ranks on the node (the smallest over the ranks). The
+  estimate is 80 MB per process + (200 B per cell + 700 B per cell of water at t = 0 + 100 B per
+  particle, per_cell_1d^2 per cell of water) / ranks, sizes measured with the maximum resident
+  size on 5,000 to 320,000 cells and rounded up; it assumes an even share over the ranks. So a
+  cell size of 1e-7 m is refused by name. Raise `run/memory_limit_gb` to run a case the
+  estimate refuses. A `std::bad_alloc` that still happens stops the run (exit code 4) with the
+  process's size and the keys to change.
+
+)";
+}
+
 void check_case(const core::Comm& comm, const core::Params& params) {
   std::vector<std::string> errors;
   try {

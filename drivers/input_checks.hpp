@@ -21,6 +21,9 @@ double memory_estimate_bytes(const core::Params& params, int ranks);
 /// /proc/meminfo divided by the ranks on this node; the smallest over all ranks.
 double memory_limit_bytes(const core::Comm& comm, const core::Params& params);
 
+/// The description of the checks for the preamble of doc/parameters.md.
+std::string checks_markdown();
+
 /// Runs every check; throws core::InputError listing every failure (the same on every rank).
 void check_case(const core::Comm& comm, const core::Params& params);
 
