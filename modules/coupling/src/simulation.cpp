@@ -2,6 +2,7 @@
 
 #include "checkpoint_state.hpp"
 #include "simulation_state.hpp"
+#include "viscous_bodies.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -19,6 +20,7 @@
 #include "picdem/dem/parameters.hpp"
 #include "picdem/fluid/fluid.hpp"
 #include "picdem/fluid/pressure_solver.hpp"
+#include "picdem/fluid/viscous.hpp"
 #include "picdem/geometry/obstacles.hpp"
 #include "picdem/grid/field.hpp"
 #include "picdem/particles/particles.hpp"
@@ -90,6 +92,10 @@ Simulation::Simulation(core::Comm comm, core::Params params, std::string output_
 
   if (s.has_fluid) {
     s.fluid_cfg = fluid::config_from(params);
+    if (s.fluid_cfg.implicit_viscosity && s.dem && comm.size() > 1)
+      throw core::InputError(
+          "fluid/viscosity_scheme: implicit runs on one rank when there are solids (each rank "
+          "sees only its solids; doc/viscous.md)");
     s.quadrature = {params.boolean("coupling/hydrostatic_quadrature"), s.fluid_cfg.rho,
                     s.fluid_cfg.g};
     s.pressure = std::make_unique<fluid::PressureSolver>(d, params);
@@ -192,6 +198,7 @@ double choose_time_step(SimulationState& s) {
   const double cfl = s.params.real("time/cfl");
   double dt = std::min(dt_max, fluid::cfl_time_step(s.fluid.u, s.fluid.w, s.spec.h, cfl,
                                                     s.params.real("time/dt_max"), s.comm));
+  dt = std::min(dt, fluid::viscous_time_limit(s.fluid_cfg));  // explicit viscosity's stability
   if (s.diag.max_speed > 0.0) dt = std::min(dt, cfl * s.spec.h / s.diag.max_speed);
   if (!(dt >= s.params.real("time/dt_min")) && s.t_end - s.t > s.params.real("time/dt_min")) {
     std::ostringstream m;
@@ -320,11 +327,16 @@ void particles_to_grid(SimulationState& s) {
   s.fluid.u_old = s.fluid.u, s.fluid.w_old = s.fluid.w;
 }
 
-// forces: gravity and explicit viscosity -> u~.
+// forces: gravity and viscosity (explicit, or implicit at the true boundaries) -> u~.
 void add_forces(SimulationState& s, double dt) {
   core::ScopedTimer timer("forces");
   fluid::apply_gravity(s.fluid.u, s.fluid.w, s.fluid.cells, dt, s.fluid_cfg);
-  fluid::apply_viscosity(s.fluid.u, s.fluid.w, s.fluid.cells, dt, s.fluid_cfg, *s.decomp, *s.halo);
+  if (s.fluid_cfg.implicit_viscosity)
+    fluid::apply_viscosity_implicit(s.fluid.u, s.fluid.w, s.fluid.cells, dt, s.fluid_cfg, *s.decomp,
+                                    *s.halo, viscous_bodies(s.scene));
+  else
+    fluid::apply_viscosity(s.fluid.u, s.fluid.w, s.fluid.cells, dt, s.fluid_cfg, *s.decomp,
+                           *s.halo);
   fluid::enforce_walls(s.fluid.u, s.fluid.w, s.fluid_cfg, *s.decomp);
 }
 

@@ -36,6 +36,11 @@ void declare_parameters(core::ParamSchema& schema) {
   schema.reals("fluid/gravity", {0.0, -9.81}, "gravity (g_x, g_z) [m/s^2]").size(2, 2);
   schema.string("fluid/walls", "free_slip", {"free_slip", "no_slip"},
                 "tank-wall condition on the tangential velocity");
+  schema.string("fluid/viscosity_scheme", "explicit", {"explicit", "implicit"},
+                "explicit: 5-point viscosity on faces between fluid cells, the time step held "
+                "below h^2 / (4 nu); implicit: backward Euler with no-slip at the true boundary of "
+                "solids and obstacles (doc/viscous.md; one rank when there are solids, and the "
+                "viscous loads are not yet given to the solids)");
   schema.section("solver", "The pressure solve: Belos CG preconditioned by MueLu.");
   schema.real("solver/tolerance", 1e-8, "relative true residual ||b - A p|| / ||b|| to reach")
       .positive()
@@ -90,6 +95,7 @@ FluidConfig config_from(const core::Params& params) {
   const auto g = params.reals("fluid/gravity");
   c.g = {g[0], g[1]};
   c.no_slip = params.string("fluid/walls") == "no_slip";
+  c.implicit_viscosity = params.string("fluid/viscosity_scheme") == "implicit";
   c.h = params.real("grid/cell_size");
   return c;
 }

@@ -225,4 +225,9 @@ double viscous_time_step(double h, double nu) {
   return h * h / (4.0 * nu);
 }
 
+double viscous_time_limit(const FluidConfig& cfg) {
+  if (cfg.implicit_viscosity) return std::numeric_limits<double>::infinity();
+  return viscous_time_step(cfg.h, cfg.nu);
+}
+
 }  // namespace picdem::fluid

@@ -2,11 +2,14 @@
 // stencil is apply_viscosity's (no-slip ghost -u = a wall at h/2, free-slip and free surface zero
 // gradient), so one explicit step of apply_viscosity with -dt taken from the implicit result
 // gives back the old velocity on every face between two fluid cells, to the solver's tolerance,
-// with air above a fluid block (the fluid-node mask) and with either wall condition.
+// with air above a fluid block (the fluid-node mask) and with either wall condition. The key
+// fluid/viscosity_scheme and the explicit time-step limit.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "fluid_test_support.hpp"
+#include "picdem/core/error.hpp"
 #include "picdem/core/rng.hpp"
 #include "picdem/fluid/viscous.hpp"
 
@@ -65,3 +68,18 @@ TEST_P(ViscousStepTest, BackwardEulerInvertsApplyViscosity) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Walls, ViscousStepTest, ::testing::Values(false, true));
+
+TEST(ViscousScheme, KeyAndTimeStepLimit) {
+  // Default explicit: the limit h^2 / (4 nu); implicit: none (infinity).
+  const auto expl =
+      fluid::config_from(fluid_test::tank_params(0.1, 0.1, 0.001, {"fluid/viscosity=1e-3"}));
+  EXPECT_FALSE(expl.implicit_viscosity);
+  EXPECT_DOUBLE_EQ(fluid::viscous_time_limit(expl), 0.001 * 0.001 / (4.0 * 1e-3));
+  const auto impl = fluid::config_from(fluid_test::tank_params(
+      0.1, 0.1, 0.001, {"fluid/viscosity=1e-3", "fluid/viscosity_scheme=implicit"}));
+  EXPECT_TRUE(impl.implicit_viscosity);
+  EXPECT_TRUE(std::isinf(fluid::viscous_time_limit(impl)));
+  EXPECT_THROW(fluid::config_from(
+                   fluid_test::tank_params(0.1, 0.1, 0.001, {"fluid/viscosity_scheme=crank"})),
+               core::InputError);
+}

@@ -20,15 +20,17 @@
 
 namespace picdem::fluid {
 
-/// Declares fluid/density, fluid/viscosity, fluid/gravity, fluid/walls and the solver/ keys.
+/// Declares fluid/density, fluid/viscosity, fluid/gravity, fluid/walls, fluid/viscosity_scheme
+/// and the solver/ keys.
 void declare_parameters(core::ParamSchema& schema);
 
 struct FluidConfig {
-  double rho = 1000.0;       ///< density [kg/m^3]
-  double nu = 1e-6;          ///< kinematic viscosity [m^2/s]
-  core::Vec2 g{0.0, -9.81};  ///< gravity [m/s^2]
-  bool no_slip = false;      ///< tank walls: no-slip (true) or free-slip (false)
-  double h = 0.0;            ///< cell size [m] (grid/cell_size)
+  double rho = 1000.0;              ///< density [kg/m^3]
+  double nu = 1e-6;                 ///< kinematic viscosity [m^2/s]
+  core::Vec2 g{0.0, -9.81};         ///< gravity [m/s^2]
+  bool no_slip = false;             ///< tank walls: no-slip (true) or free-slip (false)
+  bool implicit_viscosity = false;  ///< fluid/viscosity_scheme: implicit (doc/viscous.md)
+  double h = 0.0;                   ///< cell size [m] (grid/cell_size)
 };
 /// Reads the fluid/ keys and grid/cell_size (declared by grid::declare_parameters).
 FluidConfig config_from(const core::Params& params);

@@ -136,4 +136,8 @@ ViscousStepResult apply_viscosity_implicit(grid::FaceField& u, grid::FaceField& 
 /// nu = 0).
 double viscous_time_step(double h, double nu);
 
+/// The time-step limit the viscosity scheme of `cfg` needs: viscous_time_step(cfg.h, cfg.nu) for
+/// the explicit scheme, infinity for the implicit one (the step takes the minimum with the CFL).
+double viscous_time_limit(const FluidConfig& cfg);
+
 }  // namespace picdem::fluid
