@@ -6,7 +6,7 @@ packages=(
   trilinos-all-dev libptscotch-dev
   libcgal-dev libgmp-dev libmpfr-dev
   libhdf5-openmpi-dev hdf5-tools libopenmpi-dev openmpi-bin
-  libgtest-dev zlib1g-dev
+  libgtest-dev libcairo2-dev fonts-dejavu-core ffmpeg
   python3 python3-numpy python3-matplotlib python3-h5py python3-meshio python3-yaml
 )
 missing=()

@@ -17,6 +17,7 @@
 #include "picdem/grid/field.hpp"
 #include "picdem/grid/grid.hpp"
 #include "picdem/io/frame_writer.hpp"
+#include "picdem/io/render.hpp"
 
 namespace {
 
@@ -76,10 +77,15 @@ int main(int argc, char** argv) {
       frames.write(0.0, 0, {{{"pressure", &p}, {"state", &state}, {"speed", &speed}}, {}, {}},
                    particles, solids, obstacles);
     });
+    io::SnapshotStyle style;
+    style.width_pixels = 1200;
+    style.speed_max = 1.0;
+    style.particle_radius = 0.3 * spec.h;
+    style.title = "bench_frames";
     const double t_png = best_of(repeats, comm, [&] {
       io::render_snapshot(comm, "bench_frames_out/snapshot.png",
                           {{0.0, 0.0}, {spec.length(), spec.height()}}, particles, solids,
-                          obstacles, 1200);
+                          obstacles, style);
     });
     if (comm.is_root()) {
       const double mb = static_cast<double>(std::filesystem::file_size(frames.frame_path(0))) / 1e6;

@@ -14,10 +14,41 @@
 #include "picdem/geometry/outline.hpp"
 #include "picdem/io/csv_writer.hpp"
 #include "picdem/io/frame_writer.hpp"
+#include "picdem/io/render.hpp"
 
 namespace picdem::coupling {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+// Title, time, step and the colour range of the pictures: output/png_speed_max, or else
+// sqrt(2 g H) with H the initial water's height above the tank floor (the tank height in a dry
+// run), the same in every frame of a run so that colours compare between frames.
+io::SnapshotStyle snapshot_style(const core::Params& params, const grid::GridSpec& spec, double t,
+                                 long long step) {
+  double water_top = -std::numeric_limits<double>::infinity();
+  for (const auto& name : params.sublist_names("water")) {
+    const auto w = params.sub("water/" + name);
+    water_top = std::max(water_top, w.string("type") == "box" ? w.reals("z")[1] : w.real("z"));
+  }
+  const double depth = std::isfinite(water_top) ? water_top - spec.origin.z : spec.height();
+  io::SnapshotStyle s;
+  s.width_pixels = static_cast<int>(params.integer("output/png_width"));
+  const auto g = params.reals("fluid/gravity");
+  const double g_abs = g.size() == 2 ? std::hypot(g[0], g[1]) : 9.81;
+  s.speed_max = params.real("output/png_speed_max") > 0.0
+                    ? params.real("output/png_speed_max")
+                    : std::sqrt(2.0 * (g_abs > 0.0 ? g_abs : 9.81) * std::max(depth, spec.h));
+  // Discs 1.6 seeding spacings across, so that still water reads as one surface.
+  s.particle_radius = 0.8 * spec.h / static_cast<double>(params.integer("particles/per_cell_1d"));
+  s.title = params.string("case/name");
+  s.time = t;
+  s.step = step;
+  return s;
+}
+
+}  // namespace
 
 Output::Output(core::Comm comm, const core::Params& params, const grid::Decomposition& d,
                std::string directory, const Mark* resume, double resume_t)
@@ -67,9 +98,7 @@ void Output::frame(double t, long long step, const Diagnostics&, const particles
                    const dem::DemSolver* dem, const std::vector<geometry::Obstacle>& obstacles,
                    bool force) {
   if (!force && t < next_frame_ - 1e-12 * std::max(1.0, interval_)) return;
-  char name[64];
-  std::snprintf(name, sizeof name, "frame_%06lld.png", frames_);
-  write_frame(t, step, ps, p, cells, dem, obstacles, name, true);
+  write_frame(t, step, ps, p, cells, dem, obstacles);
   ++frames_;
   next_frame_ = interval_ * std::floor(t / interval_ + 1e-9) + interval_;
 }
@@ -77,8 +106,7 @@ void Output::frame(double t, long long step, const Diagnostics&, const particles
 void Output::write_frame(double t, long long step, const particles::ParticleSet& ps,
                          const grid::CellField& p, const fluid::CellStates& cells,
                          const dem::DemSolver* dem,
-                         const std::vector<geometry::Obstacle>& obstacles,
-                         const std::string& png_name, bool data) {
+                         const std::vector<geometry::Obstacle>& obstacles) {
   core::ScopedTimer timer("output");
   const auto& spec = decomp_.spec();
   io::PointSet points;
@@ -100,9 +128,8 @@ void Output::write_frame(double t, long long step, const particles::ParticleSet&
       solid_lines.body_id.push_back(st.id);
     }
     for (const auto& st : dem->gather_all())
-      if (data)
-        solids_->row(
-            {t, static_cast<double>(st.id), st.x.x, st.x.z, st.theta, st.v.x, st.v.z, st.omega});
+      solids_->row(
+          {t, static_cast<double>(st.id), st.x.x, st.x.z, st.theta, st.v.x, st.v.z, st.omega});
   }
   // Fixed obstacles are known everywhere: rank 0 passes them.
   for (std::size_t o = 0; comm_.is_root() && o < obstacles.size(); ++o)
@@ -111,8 +138,8 @@ void Output::write_frame(double t, long long step, const particles::ParticleSet&
       obstacle_lines.body_id.push_back(static_cast<std::int64_t>(o));
     }
 
-  if (data) last_frame_step_ = step;
-  if (frames_writer_ && data) {
+  last_frame_step_ = step;
+  if (frames_writer_) {
     const fluid::CellStates air(decomp_, grid::Stagger::Cell, 0);
     io::CellArrays arrays;
     if (!p.data().empty()) arrays.reals["pressure"] = &p;
@@ -122,21 +149,29 @@ void Output::write_frame(double t, long long step, const particles::ParticleSet&
   }
   if (params_.boolean("output/png")) {
     const core::Box2 tank{spec.origin, spec.origin + core::Vec2{spec.length(), spec.height()}};
-    io::render_snapshot(comm_, dir_ + "/pictures/" + png_name, tank, points, solid_lines,
-                        obstacle_lines, static_cast<int>(params_.integer("output/png_width")));
+    char name[64];  // the step, as the HDF5 frame
+    std::snprintf(name, sizeof name, "/pictures/frame_%06lld.png", step);
+    io::render_snapshot(comm_, dir_ + name, tank, points, solid_lines, obstacle_lines,
+                        snapshot_style(params_, spec, t, step));
   }
 }
 
 void Output::finish(double t, long long step, const Diagnostics&, const particles::ParticleSet& ps,
                     const grid::CellField& p, const fluid::CellStates& cells,
                     const dem::DemSolver* dem, const std::vector<geometry::Obstacle>& obstacles) {
-  // The last state as final.png; its frame data unless the last frame already holds this step.
-  write_frame(t, step, ps, p, cells, dem, obstacles, "final.png", step != last_frame_step_);
+  // The last state as a frame unless the last frame already holds this step.
+  if (step != last_frame_step_) write_frame(t, step, ps, p, cells, dem, obstacles);
+  std::string movie;
+  if (params_.boolean("output/png") && params_.boolean("output/movie") && comm_.is_root()) {
+    const auto m = io::make_movie(dir_ + "/pictures", step, params_.real("output/movie_fps"));
+    movie = "\n  " + (m.path.empty() ? m.message : "movie: " + m.path + " (" + m.message + ")");
+  }
   std::ostringstream table;
   core::summarize_timers(comm_, table);
   if (comm_.is_root()) std::ofstream(dir_ + "/timers.txt") << table.str();
   core::log(comm_, "output in " + fs::absolute(dir_).string() +
-                       ":\n  pictures/final.png (last state), pictures/frame_*.png\n  picdem.xdmf "
+                       ":\n  pictures/frame_NNNNNN.png (NNNNNN = step)" + movie +
+                       "\n  picdem.xdmf "
                        "+ frames/*.h5 (open picdem.xdmf in ParaView)\n  timeseries.csv, "
                        "solids.csv, case_resolved.yaml, timers.txt");
 }

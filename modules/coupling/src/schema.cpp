@@ -30,8 +30,16 @@ void declare_parameters(core::ParamSchema& s) {
   s.boolean("output/paraview", true, "write XDMF + HDF5 frames");
   s.boolean("output/png", true, "write a PNG picture with every frame");
   s.integer("output/png_width", 1000, "width of the PNG pictures [pixels]")
-      .at_least(64)
+      .at_least(200)
       .at_most(8000);
+  s.real("output/png_speed_max", 0.0,
+         "speed at the top of the pictures' colour bar, the same in every frame [m/s]; 0: "
+         "sqrt(2 g H), H the initial water's height above the floor (the tank's without water)")
+      .at_least(0.0);
+  s.boolean("output/movie", false,
+            "at the end, join the pictures into pictures/movie.mp4 (ffmpeg; without it "
+            "movie.gif through python3-pil)");
+  s.real("output/movie_fps", 10.0, "frames per second of the movie").positive().at_most(120.0);
   s.reals("output/level_probes", {},
           "x positions [m] whose free-surface height is recorded in timeseries.csv (level_1, ...)")
       .size(0, 32);

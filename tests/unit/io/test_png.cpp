@@ -1,211 +1,246 @@
-// PNG: decode what Image::write_png wrote (chunk CRCs, inflate of IDAT, pixel values) and the
-// standard snapshot picture.
+// PNG snapshots: render_snapshot's pictures decoded again (read_png, libpng through Cairo) and
+// checked pixel by pixel against the layout, the colour map and the fixed colour range.
 #include <gtest/gtest.h>
-#include <zlib.h>
 
-#include <cstdint>
-#include <fstream>
-#include <iterator>
-#include <map>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "picdem/core/comm.hpp"
 #include "picdem/core/error.hpp"
-#include "picdem/io/frame_writer.hpp"
-#include "picdem/io/image.hpp"
+#include "picdem/io/render.hpp"
 
 namespace {
 
-using picdem::io::Image;
-using picdem::io::Pixel;
+using picdem::core::Box2;
+using picdem::core::Comm;
+using picdem::io::colormap;
+using picdem::io::read_png;
+using picdem::io::render_snapshot;
 using picdem::io::Rgb;
+using picdem::io::RgbImage;
+using picdem::io::snapshot_layout;
+using picdem::io::SnapshotStyle;
 
-struct Decoded {
-  int width = 0, height = 0;
-  std::vector<std::uint8_t> rgb;
-  std::map<std::string, std::string> text;
-  std::vector<std::string> chunk_order;
-};
-
-std::uint32_t be32(const std::uint8_t* p) {
-  return (std::uint32_t(p[0]) << 24) | (std::uint32_t(p[1]) << 16) | (std::uint32_t(p[2]) << 8) |
-         p[3];
-}
-
-// A strict decoder for what the writer produces: 8-bit RGB, filter 0 on every row.
-Decoded decode(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  const std::vector<std::uint8_t> f((std::istreambuf_iterator<char>(in)),
-                                    std::istreambuf_iterator<char>());
-  Decoded d;
-  const std::uint8_t sig[8] = {137, 80, 78, 71, 13, 10, 26, 10};
-  EXPECT_GE(f.size(), 8u);
-  EXPECT_TRUE(std::equal(sig, sig + 8, f.begin()));
-  std::vector<std::uint8_t> idat;
-  std::size_t p = 8;
-  while (p + 12 <= f.size()) {
-    const std::uint32_t len = be32(&f[p]);
-    EXPECT_LE(p + 12 + len, f.size());
-    const std::string type(f.begin() + p + 4, f.begin() + p + 8);
-    const std::uint8_t* data = &f[p + 8];
-    const uLong crc = crc32(0L, &f[p + 4], len + 4);
-    EXPECT_EQ(crc, be32(&f[p + 8 + len])) << "CRC of chunk " << type;
-    d.chunk_order.push_back(type);
-    if (type == "IHDR") {
-      d.width = static_cast<int>(be32(data));
-      d.height = static_cast<int>(be32(data + 4));
-      EXPECT_EQ(data[8], 8);  // bit depth
-      EXPECT_EQ(data[9], 2);  // RGB
-    } else if (type == "IDAT") {
-      idat.insert(idat.end(), data, data + len);
-    } else if (type == "tEXt") {
-      const std::string s(data, data + len);
-      d.text[s.substr(0, s.find('\0'))] = s.substr(s.find('\0') + 1);
-    }
-    p += 12 + len;
-  }
-  EXPECT_EQ(p, f.size());
-  const std::size_t row = 3 * static_cast<std::size_t>(d.width);
-  std::vector<std::uint8_t> raw((row + 1) * d.height);
-  uLongf size = raw.size();
-  EXPECT_EQ(uncompress(raw.data(), &size, idat.data(), idat.size()), Z_OK);
-  EXPECT_EQ(size, raw.size());
-  for (int y = 0; y < d.height; ++y) {
-    EXPECT_EQ(raw[y * (row + 1)], 0) << "filter byte of row " << y;
-    d.rgb.insert(d.rgb.end(), raw.begin() + y * (row + 1) + 1, raw.begin() + (y + 1) * (row + 1));
-  }
-  return d;
-}
-
-Rgb at(const Decoded& d, int x, int y) {
-  const std::size_t p = (static_cast<std::size_t>(y) * d.width + x) * 3;
-  return {d.rgb[p], d.rgb[p + 1], d.rgb[p + 2]};
-}
+const Box2 tank{{0.0, 0.0}, {2.0, 1.0}};
 
 std::string name(const std::string& base) {
-  return base + "_np" + std::to_string(picdem::core::Comm().size()) + ".png";
+  return base + "_np" + std::to_string(Comm().size()) + ".png";
+}
+
+int max_channel_diff(Rgb a, Rgb b) {
+  return std::max({std::abs(a.r - b.r), std::abs(a.g - b.g), std::abs(a.b - b.b)});
+}
+
+bool white(Rgb c) {
+  return c == Rgb{255, 255, 255};
+}
+
+SnapshotStyle style(int width, double speed_max) {
+  SnapshotStyle s;
+  s.width_pixels = width;
+  s.speed_max = speed_max;
+  s.particle_radius = 0.05;
+  s.title = "test case";
+  s.time = 0.25;
+  s.step = 40;
+  return s;
 }
 
 TEST(Png, ColormapEndsAndMonotoneLightness) {
-  EXPECT_EQ(picdem::io::colormap(0.0), (Rgb{68, 1, 84}));
-  EXPECT_EQ(picdem::io::colormap(1.0), (Rgb{253, 231, 37}));
-  EXPECT_EQ(picdem::io::colormap(-3.0), picdem::io::colormap(0.0));
-  EXPECT_EQ(picdem::io::colormap(0.5), (Rgb{33, 144, 140}));
+  EXPECT_EQ(colormap(0.0), (Rgb{68, 1, 84}));
+  EXPECT_EQ(colormap(1.0), (Rgb{253, 231, 37}));
+  EXPECT_EQ(colormap(-3.0), colormap(0.0));
+  EXPECT_EQ(colormap(std::nan("")), colormap(0.0));
+  EXPECT_EQ(colormap(0.5), (Rgb{33, 144, 140}));
   // Perceptual ordering: luma grows along the map.
   double prev = -1;
   for (int n = 0; n <= 64; ++n) {
-    const Rgb c = picdem::io::colormap(n / 64.0);
+    const Rgb c = colormap(n / 64.0);
     const double luma = 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
     EXPECT_GT(luma, prev) << n;
     prev = luma;
   }
 }
 
-TEST(Png, DecodesWithKnownPixels) {
-  const picdem::core::Comm comm;
-  if (!comm.is_root()) return;  // a serial object: rank 0 checks it
-  Image img(37, 21, {255, 255, 255});
-  img.set(0, 0, {1, 2, 3});
-  img.set(36, 20, {250, 0, 7});
-  img.draw_line({2.5, 10.5}, {30.5, 10.5}, {0, 0, 255});
-  img.draw_disc({10.0, 5.0}, 2.0, {255, 0, 0});
-  // A filled triangle with corners on pixel boundaries.
-  img.draw_polyline({{20, 2}, {34, 2}, {34, 9}}, {0, 0, 0}, true, true, {0, 200, 0});
-  img.set(-1, 5, {9, 9, 9});  // clipped, no effect
-  img.write_png(name("png_basic"), {{"key", "value 1"}});
-  const Decoded d = decode(name("png_basic"));
-  ASSERT_EQ(d.width, 37);
-  ASSERT_EQ(d.height, 21);
-  EXPECT_EQ(d.chunk_order.front(), "IHDR");
-  EXPECT_EQ(d.chunk_order.back(), "IEND");
-  EXPECT_EQ(d.text.at("key"), "value 1");
-  EXPECT_EQ(at(d, 0, 0), (Rgb{1, 2, 3}));
-  EXPECT_EQ(at(d, 36, 20), (Rgb{250, 0, 7}));
-  EXPECT_EQ(at(d, 1, 1), (Rgb{255, 255, 255}));
-  for (int x = 2; x <= 30; ++x) EXPECT_EQ(at(d, x, 10), (Rgb{0, 0, 255})) << x;
-  EXPECT_EQ(at(d, 31, 10), (Rgb{255, 255, 255}));
-  // Disc of radius 2 around (10, 5): pixel centres within 2.
-  EXPECT_EQ(at(d, 9, 4), (Rgb{255, 0, 0}));
-  EXPECT_EQ(at(d, 11, 4), (Rgb{255, 0, 0}));      // centre (11.5, 4.5): distance 1.58
-  EXPECT_EQ(at(d, 11, 3), (Rgb{255, 255, 255}));  // centre (11.5, 3.5): distance 2.12 > 2
-  EXPECT_EQ(at(d, 12, 6), (Rgb{255, 255, 255}));
-  // Triangle interior (below the edge from (20,2) to (34,9) is outside): (32, 4) is inside.
-  EXPECT_EQ(at(d, 32, 4), (Rgb{0, 200, 0}));
-  EXPECT_EQ(at(d, 22, 7), (Rgb{255, 255, 255}));
-  // Decoded image == canvas, byte for byte.
-  EXPECT_EQ(d.rgb, img.pixels());
+// Every row inside the bar has the colour of its height: s = (bottom - row centre) / bar height.
+TEST(Png, ColourBarFollowsTheColormap) {
+  const Comm comm;
+  render_snapshot(comm, name("png_bar"), tank, {}, {}, {}, style(600, 2.0));
+  if (!comm.is_root()) return;
+  const RgbImage img = read_png(name("png_bar"));
+  const auto L = snapshot_layout(tank, 600);
+  ASSERT_GT(L.bar_h, 100);
+  int worst = 0;
+  for (int y = L.bar_y0; y < L.bar_y0 + L.bar_h; ++y) {
+    const double s = (L.bar_y0 + L.bar_h - (y + 0.5)) / L.bar_h;
+    for (int x = L.bar_x0; x < L.bar_x0 + L.bar_w; ++x)
+      worst = std::max(worst, max_channel_diff(img.at(x, y), colormap(s)));
+  }
+  EXPECT_LE(worst, 2) << "largest channel difference from the colour map in the bar";
+  // The frame just outside the bar is dark.
+  EXPECT_LT(img.at(L.bar_x0 - 1, L.bar_y0 + L.bar_h / 2).g, 80);
+  EXPECT_LT(img.at(L.bar_x0 + L.bar_w, L.bar_y0 + L.bar_h / 2).g, 80);
 }
 
-TEST(Png, BadSizeAndUnwritablePath) {
-  EXPECT_THROW(Image(0, 5), std::invalid_argument);
-  Image img(4, 4);
-  EXPECT_THROW(img.write_png("/nonexistent_dir_picdem/x.png"), picdem::core::InputError);
+// A square solid [0.5, 0.9] x [0.2, 0.6] m: its outline's first and last dark pixels along the
+// row and the column through its centre lie within a pixel of the edges' pixel positions.
+TEST(Png, SolidLandsAtItsPixels) {
+  const Comm comm;
+  picdem::io::Polylines solids;
+  if (comm.rank() == comm.size() - 1)
+    solids.lines = {{{0.5, 0.2}, {0.9, 0.2}, {0.9, 0.6}, {0.5, 0.6}}}, solids.body_id = {7};
+  render_snapshot(comm, name("png_solid"), tank, {}, solids, {}, style(800, 1.0));
+  if (!comm.is_root()) return;
+  const RgbImage img = read_png(name("png_solid"));
+  const auto L = snapshot_layout(tank, 800);
+  const int row = static_cast<int>(L.py(0.4)), col = static_cast<int>(L.px(0.7));
+  int first = -1, last = -1;
+  for (int x = static_cast<int>(L.px(0.05)); x < static_cast<int>(L.px(1.95)); ++x)
+    if (!white(img.at(x, row))) {
+      if (first < 0) first = x;
+      last = x;
+    }
+  EXPECT_NEAR(first + 0.5, L.px(0.5), 1.0);
+  EXPECT_NEAR(last + 0.5, L.px(0.9), 1.0);
+  int top = -1, bottom = -1;
+  for (int y = static_cast<int>(L.py(0.95)); y < static_cast<int>(L.py(0.05)); ++y)
+    if (!white(img.at(col, y))) {
+      if (top < 0) top = y;
+      bottom = y;
+    }
+  EXPECT_NEAR(top + 0.5, L.py(0.6), 1.0);
+  EXPECT_NEAR(bottom + 0.5, L.py(0.2), 1.0);
+  EXPECT_EQ(img.at(col, row), (Rgb{215, 215, 215}));  // filled
+  EXPECT_EQ(img.width, 800);
+  EXPECT_EQ(img.height, L.height);
+}
+
+// Two frames of one run: a patch at 0.5 m/s keeps its colour, colormap(0.5 / speed_max),
+// whatever the other particles do (the range does not follow the frame's extremes).
+TEST(Png, FixedRangeGivesTheSameColoursInEveryFrame) {
+  const Comm comm;
+  std::vector<RgbImage> frames;
+  for (const double other : {2.0, 0.1}) {
+    picdem::io::PointSet p;
+    if (comm.is_root()) {
+      for (int i = -2; i <= 2; ++i)
+        for (int j = -2; j <= 2; ++j) {
+          p.x.push_back(1.5 + 0.04 * i);
+          p.z.push_back(0.3 + 0.04 * j);
+          p.scalars["speed"].push_back(0.5);
+        }
+      p.x.push_back(0.3);
+      p.z.push_back(0.7);
+      p.scalars["speed"].push_back(other);
+    } else {
+      p.scalars["speed"];
+    }
+    auto s = style(600, 1.0);
+    s.time = other;
+    const std::string file = name("png_range_" + std::to_string(frames.size()));
+    render_snapshot(comm, file, tank, p, {}, {}, s);
+    if (comm.is_root()) frames.push_back(read_png(file));
+  }
+  if (!comm.is_root()) return;
+  const auto L = snapshot_layout(tank, 600);
+  const int x = static_cast<int>(L.px(1.5)), y = static_cast<int>(L.py(0.3));
+  EXPECT_EQ(frames[0].at(x, y), frames[1].at(x, y));
+  EXPECT_LE(max_channel_diff(frames[0].at(x, y), colormap(0.5)), 1);
+  const int xo = static_cast<int>(L.px(0.3)), yo = static_cast<int>(L.py(0.7));
+  EXPECT_LE(max_channel_diff(frames[0].at(xo, yo), colormap(1.0)), 1);  // 2 m/s: the top colour
+  EXPECT_LE(max_channel_diff(frames[1].at(xo, yo), colormap(0.1)), 1);
+}
+
+TEST(Png, SizeFollowsTheWidth) {
+  const Comm comm;
+  for (const int w : {300, 1000, 1500}) {
+    render_snapshot(comm, name("png_width"), tank, {}, {}, {}, style(w, 1.0));
+    if (!comm.is_root()) continue;
+    const RgbImage img = read_png(name("png_width"));
+    const auto L = snapshot_layout(tank, w);
+    EXPECT_EQ(img.width, w);
+    EXPECT_EQ(img.height, L.height);
+    // The tank keeps its 2:1 aspect ratio within a pixel.
+    EXPECT_NEAR(L.py(0.0) - L.py(1.0), 0.5 * (L.px(2.0) - L.px(0.0)), 1.0);
+  }
+}
+
+// The title is drawn: the header band above the tank changes with it and has dark text pixels.
+TEST(Png, TitleAndTimeAreWritten) {
+  const Comm comm;
+  auto s = style(600, 1.0);
+  render_snapshot(comm, name("png_title"), tank, {}, {}, {}, s);
+  s.title.clear();
+  render_snapshot(comm, name("png_untitled"), tank, {}, {}, {}, s);
+  if (!comm.is_root()) return;
+  const RgbImage a = read_png(name("png_title")), b = read_png(name("png_untitled"));
+  const auto L = snapshot_layout(tank, 600);
+  int dark_a = 0, dark_b = 0, dark_right = 0;
+  for (int y = 0; y < L.plot_y0 - 2; ++y) {
+    for (int x = 0; x < L.width / 3; ++x) {
+      dark_a += a.at(x, y).r < 100;
+      dark_b += b.at(x, y).r < 100;
+    }
+    for (int x = L.width / 2; x < L.bar_x0; ++x) dark_right += b.at(x, y).r < 100;
+  }
+  EXPECT_GT(dark_a, 50) << "the title's pixels";
+  EXPECT_EQ(dark_b, 0) << "no title, no text on the left";
+  EXPECT_GT(dark_right, 50) << "the time's pixels";
 }
 
 TEST(Png, SnapshotGathersEveryRanksParticles) {
-  const picdem::core::Comm comm;
-  // Tank [0, 2] x [0, 1]; each rank contributes one particle; the last one is the fastest.
+  const Comm comm;
+  // Each rank contributes one particle at its own place and speed r / size.
   picdem::io::PointSet p;
   const int r = comm.rank(), size = comm.size();
-  p.x = {0.2 + 0.5 * r};
+  p.x = {0.3 + 0.4 * r};
   p.z = {0.5};
-  p.scalars["speed"] = {1.0 + r};
-  if (r == 0) {  // and the slowest one
-    p.x.push_back(0.2);
-    p.z.push_back(0.8);
-    p.scalars["speed"].push_back(0.0);
-  }
-  picdem::io::Polylines solids, obstacles;
-  if (r == 0) {
-    solids.lines = {{{1.6, 0.1}, {1.9, 0.1}, {1.9, 0.4}, {1.6, 0.4}}};
-    solids.body_id = {0};
-  }
-  picdem::io::render_snapshot(comm, name("png_snapshot"), {{0.0, 0.0}, {2.0, 1.0}}, p, solids,
-                              obstacles, 400);
-  comm.barrier();
+  p.scalars["speed"] = {static_cast<double>(r) / size};
+  render_snapshot(comm, name("png_gather"), tank, p, {}, {}, style(600, 1.0));
   if (!comm.is_root()) return;
-  const Decoded d = decode(name("png_snapshot"));
-  // Layout from render_snapshot: margin 8, bar 10, plot width 400 - 24 - 10 - 3 = 363.
-  const double scale = 363.0 / 2.0;
-  auto px = [&](double x, double z, int& i, int& j) {
-    i = static_cast<int>(8 + x * scale);
-    j = static_cast<int>(8 + (1.0 - z) * scale);
-  };
-  EXPECT_EQ(d.width, 400);
-  EXPECT_EQ(d.height, static_cast<int>(std::lround(scale)) + 16);
-  EXPECT_EQ(std::stod(d.text.at("speed_min")), 0.0);
-  EXPECT_EQ(std::stod(d.text.at("speed_max")), static_cast<double>(size));
-  int i, j;
-  px(0.2, 0.8, i, j);
-  EXPECT_EQ(at(d, i, j), picdem::io::colormap(0.0));
-  px(0.2, 0.5, i, j);
-  EXPECT_EQ(at(d, i, j), picdem::io::colormap(1.0 / size));
-  px(0.2 + 0.5 * (size - 1), 0.5, i, j);
-  EXPECT_EQ(at(d, i, j), picdem::io::colormap(1.0));
-  px(1.75, 0.25, i, j);
-  EXPECT_EQ(at(d, i, j), (Rgb{210, 210, 210}));  // inside the solid
-  px(1.0, 1.0, i, j);
-  EXPECT_EQ(at(d, i, j), (Rgb{64, 64, 64}));  // top tank wall
-  // Colour bar: top row maximum colour, bottom row minimum colour.
-  const int bar_x = 2 * 8 + 363 + 5;
-  EXPECT_EQ(at(d, bar_x, 8), picdem::io::colormap(1.0));
-  EXPECT_EQ(at(d, bar_x, d.height - 9), picdem::io::colormap(0.0));
+  const RgbImage img = read_png(name("png_gather"));
+  const auto L = snapshot_layout(tank, 600);
+  for (int k = 0; k < size; ++k) {
+    const Rgb c = img.at(static_cast<int>(L.px(0.3 + 0.4 * k)), static_cast<int>(L.py(0.5)));
+    EXPECT_LE(max_channel_diff(c, colormap(static_cast<double>(k) / size)), 1) << "rank " << k;
+  }
 }
 
-}  // namespace
-
-namespace {
-
-TEST(Png, SnapshotRejectsMismatchedSpeedOnEveryRank) {
-  const picdem::core::Comm comm;
+TEST(Png, BadInputIsRejectedOnEveryRank) {
+  const Comm comm;
   picdem::io::PointSet p;
   p.x = {0.5};
   p.z = {0.5};
   if (comm.rank() == comm.size() - 1) p.scalars["speed"] = {1.0, 2.0};  // one rank is wrong
+  EXPECT_THROW(render_snapshot(comm, name("png_bad"), tank, p, {}, {}, style(400, 1.0)),
+               picdem::core::InputError);
+  EXPECT_THROW(render_snapshot(comm, name("png_bad"), tank, {}, {}, {}, style(100, 1.0)),
+               picdem::core::InputError);
+  EXPECT_THROW(render_snapshot(comm, name("png_bad"), tank, {}, {}, {}, style(400, 0.0)),
+               picdem::core::InputError);
   EXPECT_THROW(
-      picdem::io::render_snapshot(comm, name("png_bad"), {{0.0, 0.0}, {1.0, 1.0}}, p, {}, {}, 200),
+      render_snapshot(comm, "/nonexistent_dir_picdem/x.png", tank, {}, {}, {}, style(400, 1.0)),
       picdem::core::InputError);
+  EXPECT_THROW(read_png("/nonexistent_dir_picdem/x.png"), picdem::core::InputError);
+}
+
+TEST(Movie, MissingEncoderGivesAMessage) {
+  const Comm comm;
+  if (!comm.is_root()) return;  // make_movie is not collective
+  const std::string dir = "movie_missing_np" + std::to_string(comm.size());
+  std::filesystem::create_directories(dir);
+  render_snapshot(Comm(MPI_COMM_SELF), dir + "/frame_000000.png", tank, {}, {}, {},
+                  style(300, 1.0));
+  const auto m =
+      picdem::io::make_movie(dir, 100, 10.0, "/nonexistent/ffmpeg", "/nonexistent/python3");
+  EXPECT_TRUE(m.path.empty());
+  EXPECT_NE(m.message.find("neither '/nonexistent/ffmpeg'"), std::string::npos) << m.message;
+  const auto none = picdem::io::make_movie(dir + "/nothing_here", 100, 10.0);
+  EXPECT_TRUE(none.path.empty());
+  EXPECT_NE(none.message.find("no pictures"), std::string::npos) << none.message;
 }
 
 }  // namespace

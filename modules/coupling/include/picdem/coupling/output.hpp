@@ -46,7 +46,8 @@ class Output {
   void frame(double t, long long step, const Diagnostics& diag, const particles::ParticleSet& ps,
              const grid::CellField& p, const fluid::CellStates& cells, const dem::DemSolver* dem,
              const std::vector<geometry::Obstacle>& obstacles, bool force);
-  /// Last frame, final.png, timer table; prints where everything is.
+  /// The last state as a frame (unless the last frame holds it), the movie when output/movie
+  /// asks for it, the timer table; prints where everything is.
   void finish(double t, long long step, const Diagnostics& diag, const particles::ParticleSet& ps,
               const grid::CellField& p, const fluid::CellStates& cells, const dem::DemSolver* dem,
               const std::vector<geometry::Obstacle>& obstacles);
@@ -54,8 +55,7 @@ class Output {
  private:
   void write_frame(double t, long long step, const particles::ParticleSet& ps,
                    const grid::CellField& p, const fluid::CellStates& cells,
-                   const dem::DemSolver* dem, const std::vector<geometry::Obstacle>& obstacles,
-                   const std::string& png_name, bool data);
+                   const dem::DemSolver* dem, const std::vector<geometry::Obstacle>& obstacles);
 
   core::Comm comm_;
   core::Params params_;

@@ -88,13 +88,4 @@ class FrameWriter {
   std::vector<Entry> entries_;  // meaningful on rank 0
 };
 
-/// The standard picture of a state, written by rank 0 from data gathered from all ranks:
-/// particles as small discs coloured by scalars["speed"] (colormap from the global min to max,
-/// whose values go into tEXt chunks speed_min / speed_max), solids filled light grey, obstacles
-/// mid grey, outlines and tank walls dark grey, and a colour bar on the right. The picture is
-/// width_pixels wide; the height follows the tank's aspect ratio. Collective.
-void render_snapshot(const core::Comm& comm, const std::string& png_path, const core::Box2& tank,
-                     const PointSet& particles, const Polylines& solids, const Polylines& obstacles,
-                     int width_pixels);
-
 }  // namespace picdem::io
