@@ -63,31 +63,56 @@ namespace {
 
 class LinearSpringDashpot final : public ContactLaw {
  public:
-  explicit LinearSpringDashpot(const DemConfig& cfg)
-      : cfg_(cfg), unit_(unit_coefficients(cfg)), dt_(dem_time_step(cfg)) {
+  /// m_s > 0: the stiffness mass of a case (for_masses), 0: each pair's own m_ij (the paper's).
+  LinearSpringDashpot(const DemConfig& cfg, double m_s)
+      : cfg_(cfg), unit_(unit_coefficients(cfg)), dt_(dem_time_step(cfg)), m_s_(m_s) {
     cfg_.contact_law = nullptr;  // the law keeps the settings, not itself
   }
   std::string name() const override { return "linear_spring_dashpot"; }
+
   ContactCoefficients coefficients(double m_a, double m_b) const override {
-    // m_ij = (m_i + m_j) / 2 for a pair of solids, m_ij = m_i against a wall or an obstacle
-    return scaled(unit_, m_b == kFixedMass ? m_a : 0.5 * (m_a + m_b));
+    const bool fixed = m_b == kFixedMass;
+    // eqs. 10-13 with m_ij = m_i against a wall or an obstacle, (m_i + m_j) / 2 for two solids
+    const double m_ij = fixed ? m_a : 0.5 * (m_a + m_b);
+    if (m_s_ == 0.0 || (m_ij == m_s_ && (fixed || m_a == m_b))) return scaled(unit_, m_ij);
+    // any mass ratio (doc/dem.md, "Unequal masses"): k = m_s ||g|| / (theta dx) for every pair,
+    // c = 2 alpha sqrt(m_d k) with m_d = m_i at a wall, 2 m* = 2 m_i m_j / (m_i + m_j) between
+    // solids: the paper's damping ratio for every pair
+    const double m_d = fixed ? m_a : 2.0 * m_a * m_b / (m_a + m_b);
+    ContactCoefficients k = scaled(unit_, m_s_);
+    const double c = std::sqrt(m_d / m_s_);
+    k.c_n *= c;
+    k.c_t *= c;
+    return k;
   }
+
   ContactForce force(const ContactCoefficients& k, const ContactKinematics& c, const BodyMotion& a,
                      const BodyMotion& b, double spring, double dt) const override {
     return contact_force(cfg_, k, c, a, b, spring, dt);
   }
-  double time_step(double, double) const override { return dt_; }
+
+  double time_step(double m_min, double m_max) const override {
+    // eq. 18 for the pair that needs the smallest step, the two lightest solids (or the lightest
+    // at a wall) under k = m_max ||g|| / (theta dx): dt_paper sqrt(m_min / m_max)
+    if (!(m_min > 0.0) || m_min == m_max) return dt_;
+    return dt_ * std::sqrt(m_min / m_max);
+  }
+
+  ContactLawPtr for_masses(double, double m_max) const override {
+    return std::make_shared<LinearSpringDashpot>(cfg_, m_max);
+  }
 
  private:
   DemConfig cfg_;
   ContactCoefficients unit_;  // eqs. 10-13 per unit m_ij
   double dt_;                 // eq. 18
+  double m_s_;                // stiffness mass; 0: the pair's m_ij
 };
 
 }  // namespace
 
 ContactLawPtr linear_spring_dashpot(const DemConfig& cfg) {
-  return std::make_shared<LinearSpringDashpot>(cfg);
+  return std::make_shared<LinearSpringDashpot>(cfg, 0.0);
 }
 
 ContactLawType linear_spring_dashpot_type() {

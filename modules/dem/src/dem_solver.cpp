@@ -171,6 +171,8 @@ void DemSolver::add_solids(const std::vector<SolidSpec>& solids) {
   double m_min = statics_.empty() ? 0.0 : statics_.front().mass, m_max = m_min;
   for (const auto& st : statics_)
     m_min = std::min(m_min, st.mass), m_max = std::max(m_max, st.mass);
+  law_ =
+      (cfg_.contact_law ? cfg_.contact_law : linear_spring_dashpot(cfg_))->for_masses(m_min, m_max);
   dt_dem_ = law_->time_step(m_min, m_max);
   sort_owned();
   rebuild();

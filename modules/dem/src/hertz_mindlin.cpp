@@ -76,6 +76,10 @@ class HertzMindlin final : public ContactLaw {
     return out;
   }
 
+  ContactLawPtr for_masses(double, double) const override {
+    return std::make_shared<HertzMindlin>(*this);
+  }
+
   double time_step(double m_min, double m_max) const override {
     // m* / m_ij of the most unequal pair, 2 r / (1 + r)^2 with r = m_max / m_min (1/2 for equal
     // masses; a wall's 1 is larger)

@@ -4,6 +4,7 @@
 // e = exp(-zeta pi / sqrt(1 - zeta^2)) with zeta = c / (2 sqrt(k m*)).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "dem_fixtures.hpp"
@@ -104,9 +105,12 @@ TEST_P(PairCollision, RestitutionMatchesAndMomentumIsConserved) {
   // momentum to round-off
   EXPECT_NEAR(p1, p0, 1e-14 * (m1 + m2) * v0);
   EXPECT_NEAR(m1 * b[0].v.z + m2 * b[1].v.z, 0.0, 1e-14 * (m1 + m2) * v0);
-  // m_ij = (m_i + m_j) / 2 in k and c; m* = m1 m2 / (m1 + m2) in the dynamics
-  const auto k = coefficients(cfg, 0.5 * (m1 + m2));
-  const double e_expected = expected_e(k.c_n, k.k_n, m1 * m2 / (m1 + m2));
+  // k from the heavier mass (the case's largest, doc/dem.md "Unequal masses"), c = 2 alpha
+  // sqrt(2 m* k); m* = m1 m2 / (m1 + m2) in the dynamics. Equal masses: eqs. 10-11 with m_ij = m
+  const double m_star = m1 * m2 / (m1 + m2);
+  const double k_n = coefficients(cfg, std::max(m1, m2)).k_n;
+  const double e_expected =
+      expected_e(2.0 * cfg.alpha * std::sqrt(2.0 * m_star * k_n), k_n, m_star);
   const double e = (b[1].v.x - b[0].v.x) / (2.0 * v0);
   EXPECT_NEAR(e, e_expected, tol * e_expected);
 }

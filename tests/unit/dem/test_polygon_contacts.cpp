@@ -3,6 +3,7 @@
 // square against a wall and an obstacle.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "dem_fixtures.hpp"
@@ -29,8 +30,10 @@ std::vector<core::SolidLoads> loads_of(const std::vector<SolidSpec>& solids) {
   return s.predicted_collision_loads(1e-4);
 }
 
+/// k_xi of a pair in a case whose only solids are these two: eq. 10 with the heavier mass (the
+/// stiffness mass of the case, doc/dem.md "Unequal masses"; (m_1 + m_2) / 2 = m for equal ones)
 double k_n_pair(double m1, double m2) {
-  return coefficients(cfg(), 0.5 * (m1 + m2)).k_n;
+  return coefficients(cfg(), std::max(m1, m2)).k_n;
 }
 }  // namespace
 

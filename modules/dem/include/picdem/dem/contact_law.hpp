@@ -63,6 +63,10 @@ class ContactLaw {
   /// dt_DEM this law needs when the solids' masses lie in [m_min, m_max] (0, 0 before any solid
   /// is known).
   virtual double time_step(double m_min, double m_max) const = 0;
+  /// The law as it applies to a case whose solids' masses lie in [m_min, m_max] (the same on
+  /// every rank); DemSolver uses it once the solids are known. A law whose coefficients depend
+  /// on the pair alone returns a copy of itself.
+  virtual std::shared_ptr<const ContactLaw> for_masses(double m_min, double m_max) const = 0;
 };
 
 using ContactLawPtr = std::shared_ptr<const ContactLaw>;
