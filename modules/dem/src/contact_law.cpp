@@ -1,4 +1,5 @@
 // The paper's linear spring-dashpot (eqs. 7-15, 18) and its registration as the default law.
+#include <algorithm>
 #include <cmath>
 
 #include "picdem/dem/contact_law.hpp"
@@ -56,7 +57,23 @@ ContactForce contact_force(const DemConfig& cfg, const ContactCoefficients& k,
   ContactForce out;
   out.force = -F_n * n + F_t * t;
   out.spring = cfg.tangential == TangentialModel::Accumulated ? s : 0.0;
+  out.torque = rolling_torque(cfg.mu_r, F_n, c, a, b, dt);
   return out;
+}
+
+double rolling_torque(double mu_r, double F_n, const ContactKinematics& c, const BodyMotion& a,
+                      const BodyMotion& b, double dt) {
+  const double w = a.omega - b.omega;  // relative rolling
+  if (mu_r == 0.0 || w == 0.0) return 0.0;
+  const bool fixed = b.inertia == kFixedMass;
+  const double ra = core::norm(c.arm_a), rb = core::norm(c.arm_b);
+  const double R = fixed ? ra : ra * rb / (ra + rb);
+  // the torque that stops the relative rotation in one step: the cap that keeps the constant
+  // torque from reversing omega_rel (and from adding energy) as omega_rel -> 0
+  const double inv_I = 1.0 / a.inertia + (fixed ? 0.0 : 1.0 / b.inertia);
+  const double stop = std::abs(w) / (inv_I * dt);
+  // M_r = -mu_r R* |F_n| sign(omega_rel)
+  return -std::copysign(std::min(mu_r * R * std::abs(F_n), stop), w);
 }
 
 namespace {

@@ -19,7 +19,7 @@ using geometry::Segment;
 namespace {
 
 BodyMotion motion_of(const SolidState& s) {
-  return {s.v, s.omega};
+  return {s.v, s.omega, s.inertia};
 }
 
 geometry::Pose pose_of(const SolidState& s) {
@@ -314,11 +314,12 @@ void DemSolver::collision_forces(double dt_t, Stage& out, std::vector<Springs>* 
     const SolidState& s = owned_[i];
     Vec2 F{};
     double M = 0.0;
-    auto add = [&](const ContactKinematics& kin, const Vec2& arm, const Vec2& f, std::int64_t key,
-                   double spring, std::int64_t other_id, bool report) {
+    auto add = [&](const ContactKinematics& kin, const Vec2& arm, const Vec2& f, double rolling,
+                   std::int64_t key, double spring, std::int64_t other_id, bool report) {
       F += f;
       // torque arm x F, the arm to the solid's own contact point (eq. 9: F_eta R_i for circles)
       M += core::cross(arm, f);
+      if (rolling != 0.0) M += rolling;  // rolling resistance (none by default: same bits)
       if (new_springs && accumulated) (*new_springs)[i].emplace_back(key, spring);
       if (contacts && report)
         contacts->push_back({s.id, other_id, kin.point, kin.normal, kin.delta});
@@ -329,7 +330,7 @@ void DemSolver::collision_forces(double dt_t, Stage& out, std::vector<Springs>* 
       const auto coef = law.coefficients(s.mass, kFixedMass);
       const auto cf = law.force(coef, kin, motion_of(s), fixed,
                                 accumulated ? spring_of(springs_[i], key) : 0.0, dt_t);
-      add(kin, kin.arm_a, cf.force, key, cf.spring, -1, true);
+      add(kin, kin.arm_a, cf.force, cf.torque, key, cf.spring, -1, true);
     };
     for (int side = 0; side < 4; ++side)
       if (wall_pair(s, side, kin)) against_fixed(wall_key(side));
@@ -348,8 +349,8 @@ void DemSolver::collision_forces(double dt_t, Stage& out, std::vector<Springs>* 
       const auto coef = law.coefficients(a.mass, b.mass);
       const auto cf = law.force(coef, kin, motion_of(a), motion_of(b),
                                 accumulated ? spring_of(springs_[i], p.id) : 0.0, dt_t);
-      add(kin, i_is_a ? kin.arm_a : kin.arm_b, i_is_a ? cf.force : -cf.force, p.id, cf.spring, p.id,
-          i_is_a);
+      add(kin, i_is_a ? kin.arm_a : kin.arm_b, i_is_a ? cf.force : -cf.force,
+          i_is_a ? cf.torque : -cf.torque, p.id, cf.spring, p.id, i_is_a);
     }
     out.force[i] = F;
     out.torque[i] = M;

@@ -19,6 +19,7 @@ class HertzMindlin final : public ContactLaw {
  public:
   HertzMindlin(const DemConfig& cfg, double restitution)
       : mu_(cfg.mu),
+        mu_r_(cfg.mu_r),
         gamma_(cfg.gamma),
         g_(cfg.g_stiffness),
         accumulated_(cfg.tangential == TangentialModel::Accumulated) {
@@ -73,6 +74,7 @@ class HertzMindlin final : public ContactLaw {
     ContactForce out;
     out.force = -F_n * n + F_t * t;
     out.spring = accumulated_ ? s : 0.0;
+    out.torque = rolling_torque(mu_r_, F_n, c, a, b, dt);
     return out;
   }
 
@@ -91,7 +93,7 @@ class HertzMindlin final : public ContactLaw {
   }
 
  private:
-  double mu_, gamma_, g_;
+  double mu_, mu_r_, gamma_, g_;
   bool accumulated_;
   double delta_ref_ = 0.0, k1_ = 0.0, a_ = 0.0, kappa_ = 0.0, delta_dt_ = 0.0;
 };

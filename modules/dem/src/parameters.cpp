@@ -46,6 +46,11 @@ void declare_parameters(core::ParamSchema& schema) {
   for (const auto& law : contact_law_types()) law.declare(schema);
   schema.real("dem/psi", 0.3, "Poisson ratio psi (eqs. 12-13)").non_negative().less_than(0.5);
   schema.real("dem/mu", 0.3, "maximum static friction coefficient mu (eq. 15)").non_negative();
+  schema
+      .real("dem/rolling_resistance", 0.0,
+            "rolling resistance mu_r: torque mu_r R* |F_n| against the relative rolling "
+            "(doc/dem.md; 0: none, as the paper)")
+      .non_negative();
   schema.real("dem/theta", 0.01, "penetration coefficient theta of the normal stiffness (eq. 10)")
       .positive();
   schema.real("dem/gamma", 150.0, "time-step coefficient gamma (eq. 18)").positive();
@@ -75,6 +80,7 @@ DemConfig config_from(const core::Params& p, double h) {
   c.alpha = p.real("dem/alpha");
   c.psi = p.real("dem/psi");
   c.mu = p.real("dem/mu");
+  c.mu_r = p.real("dem/rolling_resistance");
   c.theta = p.real("dem/theta");
   c.gamma = p.real("dem/gamma");
   c.gap_cells = p.real("dem/gap_cells");

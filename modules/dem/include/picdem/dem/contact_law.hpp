@@ -24,8 +24,9 @@ struct ContactCoefficients {
 
 /// Rigid-body motion of one side of a contact.
 struct BodyMotion {
-  Vec2 v;            ///< velocity of the centre of mass
-  double omega = 0;  ///< angular velocity
+  Vec2 v;                       ///< velocity of the centre of mass
+  double omega = 0;             ///< angular velocity
+  double inertia = kFixedMass;  ///< moment of inertia (infinite: a wall or an obstacle)
   /// Velocity of the body point at `arm` from the centre of mass.
   Vec2 velocity_at(const Vec2& arm) const { return v + core::cross(omega, arm); }
 };
@@ -44,6 +45,7 @@ struct ContactKinematics {
 struct ContactForce {
   Vec2 force;
   double spring = 0.0;  ///< accumulated tangential displacement after this evaluation
+  double torque = 0.0;  ///< rolling-resistance torque on body a (body b receives its negative)
 };
 
 class ContactLaw {
@@ -88,6 +90,13 @@ double dem_time_step(const DemConfig& cfg);
 ContactForce contact_force(const DemConfig& cfg, const ContactCoefficients& k,
                            const ContactKinematics& c, const BodyMotion& a, const BodyMotion& b,
                            double spring, double dt);
+
+/// Rolling resistance on body a (doc/dem.md, "Rolling resistance"): the constant directional
+/// torque -mu_r R* |F_n| sign(omega_a - omega_b), R* = R_a R_b / (R_a + R_b) from the lever arms
+/// (R_a at a wall), capped by the torque that stops the relative rotation within `dt`, so it never
+/// reverses it. 0 when mu_r = 0.
+double rolling_torque(double mu_r, double F_n, const ContactKinematics& c, const BodyMotion& a,
+                      const BodyMotion& b, double dt);
 
 /// The paper's law as a ContactLaw, from cfg's alpha, psi, mu, theta, gamma, h, g_stiffness and
 /// tangential model ("linear_spring_dashpot").

@@ -25,6 +25,7 @@ struct DemConfig {
   double alpha = 0.4;      ///< damping tuning parameter (eq. 11)
   double psi = 0.3;        ///< Poisson ratio (eqs. 12-13)
   double mu = 0.3;         ///< maximum static friction coefficient (eq. 15)
+  double mu_r = 0.0;       ///< rolling resistance coefficient (doc/dem.md; 0: none, the paper)
   double theta = 0.01;     ///< penetration coefficient (eq. 10)
   double gamma = 150.0;    ///< time-step coefficient (eq. 18)
   double gap_cells = 2.0;  ///< imaginary gap in cells (eq. 19: 2 h)
