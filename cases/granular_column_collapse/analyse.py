@@ -1,0 +1,130 @@
+#!/usr/bin/env python3
+"""Final runout and height of the granular column collapses against the aspect ratio a = H0/L0.
+
+Reads OUT_DIR/a<a>/solids.csv (t, id, x, z, ...) written by sweep.sh. Lengths from the left wall
+(x = 0) and from the tips of the floor's teeth (z = 4 mm); a grain's extent is taken as its
+centre +- d50/2 (2.5 mm; the sizes run from 4 to 6 mm):
+  L0 = the column's width (the pour region's), H0 = highest grain top at t = 0;
+  L_inf = front of the continuous deposit (grains beyond a horizontal gap of 3 d_max = 18 mm
+          between neighbouring centres are counted as ejected, not as runout);
+  H_inf = highest grain top at the end.
+Rest: L_inf and H_inf 0.1 s before the end are printed next to the final ones.
+Fits log((L_inf - L0)/L0) and log(H_inf/L0) against log a by least squares over a >= 2
+(the large-a regime of Lube et al. 2005) and over all a, writes OUT_DIR/collapse.csv and, if
+matplotlib is present, OUT_DIR/granular_column_collapse.png.
+usage: analyse.py OUT_DIR
+"""
+import csv
+import math
+import os
+import sys
+
+WIDTH = {0.5: 0.2113, 1: 0.1494, 2: 0.1056, 4: 0.0747, 8: 0.0528}
+R50, FLOOR, GAP_EJECT = 0.0025, 0.004, 0.018
+
+
+def frames(path):
+    out = {}
+    with open(path) as f:
+        for row in csv.DictReader(f):
+            out.setdefault(float(row["t"]), []).append((float(row["x"]), float(row["z"])))
+    return out
+
+
+def runout(grains):
+    xs = sorted(x for x, _ in grains)
+    front = xs[0]
+    for x in xs[1:]:
+        if x - front > GAP_EJECT:
+            break
+        front = x
+    return front + R50, sum(1 for x in xs if x > front)
+
+
+def height(grains):
+    return max(z for _, z in grains) + R50 - FLOOR
+
+
+def fit(xs, ys):
+    lx = [math.log(x) for x in xs]
+    ly = [math.log(y) for y in ys]
+    n = len(lx)
+    mx, my = sum(lx) / n, sum(ly) / n
+    b = sum((p - mx) * (q - my) for p, q in zip(lx, ly)) / sum((p - mx) ** 2 for p in lx)
+    return b, math.exp(my - b * mx)
+
+
+def main():
+    out = sys.argv[1]
+    rows = []
+    for a_nom, l0 in WIDTH.items():
+        path = os.path.join(out, f"a{a_nom:g}", "solids.csv")
+        if not os.path.exists(path):
+            print(f"a = {a_nom:g}: no {path}")
+            continue
+        fr = frames(path)
+        ts = sorted(fr)
+        t_end = ts[-1]
+        t_prev = min(ts, key=lambda t: abs(t - (t_end - 0.1)))
+        h0 = height(fr[ts[0]])
+        l_inf, ejected = runout(fr[t_end])
+        l_prev, _ = runout(fr[t_prev])
+        rows.append(dict(a_nom=a_nom, n=len(fr[ts[0]]), L0=l0, H0=h0, a=h0 / l0, t_end=t_end,
+                         L_inf=l_inf, H_inf=height(fr[t_end]), ejected=ejected,
+                         L_prev=l_prev, H_prev=height(fr[t_prev])))
+    print("a_nom   N     L0      H0      a      t_end  L_inf   (0.1 s before)  H_inf   (before)"
+          "  ejected  (L_inf-L0)/L0  H_inf/L0")
+    for r in rows:
+        r["run"] = (r["L_inf"] - r["L0"]) / r["L0"]
+        r["h"] = r["H_inf"] / r["L0"]
+        print(f"{r['a_nom']:<5g} {r['n']:5d}  {r['L0']:.4f}  {r['H0']:.4f}  {r['a']:.3f}  "
+              f"{r['t_end']:.2f}  {r['L_inf']:.4f}  ({r['L_prev']:.4f})       {r['H_inf']:.4f}  "
+              f"({r['H_prev']:.4f})  {r['ejected']:5d}    {r['run']:.3f}          {r['h']:.3f}")
+    with open(os.path.join(out, "collapse.csv"), "w") as f:
+        keys = ["a_nom", "n", "L0", "H0", "a", "t_end", "L_inf", "H_inf", "ejected", "run", "h"]
+        f.write(",".join(keys) + "\n")
+        for r in rows:
+            f.write(",".join(f"{r[k]:.6g}" for k in keys) + "\n")
+    for label, sel in (("a >= 2", [r for r in rows if r["a_nom"] >= 2]), ("all a", rows)):
+        if len(sel) < 2:
+            continue
+        br, cr = fit([r["a"] for r in sel], [r["run"] for r in sel])
+        bh, ch = fit([r["a"] for r in sel], [r["h"] for r in sel])
+        print(f"fit over {label}: (L_inf-L0)/L0 = {cr:.2f} a^{br:.3f};  H_inf/L0 = {ch:.2f} a^{bh:.3f}")
+    plot(rows, out)
+
+
+def plot(rows, out):
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("matplotlib not found: no plot")
+        return
+    a = [r["a"] for r in rows]
+    fig, ax = plt.subplots(1, 2, figsize=(10, 4))
+    grid = [0.4 * 1.05 ** k for k in range(70)]
+    ax[0].loglog(a, [r["run"] for r in rows], "ko", label="picdem (disks, rough floor)")
+    ax[0].loglog([x for x in grid if x < 1.8], [1.2 * x for x in grid if x < 1.8], "b-",
+                 label="Lube et al. 2005: 1.2 a (a < 1.8)")
+    ax[0].loglog([x for x in grid if x > 2.8], [1.9 * x ** (2 / 3) for x in grid if x > 2.8], "r-",
+                 label="Lube et al. 2005: 1.9 a^(2/3) (a > 2.8)")
+    ax[0].set_xlabel("a = H0/L0")
+    ax[0].set_ylabel("(L_inf - L0)/L0")
+    ax[0].legend(fontsize=7)
+    ax[1].loglog(a, [r["h"] for r in rows], "ko", label="picdem")
+    ax[1].loglog([x for x in grid if x < 1.15], [x for x in grid if x < 1.15], "b-",
+                 label="Lube et al. 2005: a (a < 1.15)")
+    ax[1].loglog([x for x in grid if x > 1.15], [x ** 0.4 for x in grid if x > 1.15], "r-",
+                 label="Lube et al. 2005: a^(2/5) (a > 1.15)")
+    ax[1].set_xlabel("a = H0/L0")
+    ax[1].set_ylabel("H_inf/L0")
+    ax[1].legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "granular_column_collapse.png"), dpi=110)
+    print("wrote", os.path.join(out, "granular_column_collapse.png"))
+
+
+if __name__ == "__main__":
+    main()
