@@ -7,6 +7,7 @@
 #include <iostream>
 #include <memory>
 #include <new>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -116,13 +117,18 @@ int run_case(const picdem::core::Comm& comm, const Args& args, const picdem::cor
   return 0;
 }
 
-/// The process's virtual and peak resident sizes from /proc/self/status ("unknown" elsewhere).
+/// The process's virtual and peak resident sizes from /proc/self/status ("unknown memory"
+/// elsewhere).
 std::string process_size_text() {
   std::ifstream in("/proc/self/status");
   std::string line, text;
   while (std::getline(in, line))
-    if (line.rfind("VmSize:", 0) == 0 || line.rfind("VmHWM:", 0) == 0)
-      text += (text.empty() ? "" : ", ") + line;
+    if (line.rfind("VmSize:", 0) == 0 || line.rfind("VmHWM:", 0) == 0) {
+      std::istringstream in_line(line);
+      std::string key, value, unit;
+      in_line >> key >> value >> unit;
+      text += (text.empty() ? "" : ", ") + key + " " + value + " " + unit;
+    }
   return text.empty() ? "unknown memory" : text;
 }
 
@@ -176,8 +182,9 @@ int main(int argc, char** argv) {
     return 3;
   } catch (const std::bad_alloc& e) {
     // One rank ran out: the others cannot know, so this stays an abort, with what to change.
-    std::cerr << "picdem: rank " << comm.rank() << ": out of memory (std::bad_alloc) with "
-              << process_size_text() << " in use; the estimate before the run was "
+    std::cerr << "picdem: rank " << comm.rank() << ": out of memory (std::bad_alloc), process size "
+              << process_size_text()
+              << " (VmHWM: the peak resident size); the estimate before the run was "
               << memory_estimate / 1e9
               << " GB per rank: make grid/cell_size larger, particles/per_cell_1d smaller, run on "
                  "more ranks or set run/memory_limit_gb to what a rank may really use"

@@ -31,6 +31,21 @@ for name in disks_overlap disk_outside_tank disk_in_obstacle cell_size_absurd mu
   check "run_$name" "$(cat "$dir/$name.expect")" "$@" -n "$ranks" "$picdem" "$dir/$name.yaml" \
     --output "$out_dir/$name" --max-steps 1
 done
+# Memory the estimate allows (run/memory_limit_gb raised) but the process cannot get (ulimit -v):
+# std::bad_alloc is reported with the process size and the keys to change (exit code 4).
+if [ "$ranks" -eq 1 ]; then
+  out=$( (ulimit -v 1500000; timeout 120 "$picdem" "$dir/../good_case.yaml" --output "$out_dir/oom" \
+    --max-steps 1 --set grid/cell_size=0.00004 --set "water/column/x=[0.0,0.2]" \
+    --set "water/column/z=[0.0,0.1]" --set run/memory_limit_gb=100 --set output/png=false \
+    --set output/paraview=false) 2>&1)
+  code=$?
+  if [ "$code" -eq 4 ] && grep -q "out of memory (std::bad_alloc), process size VmSize" <<< "$out" \
+    && grep -q "make grid/cell_size larger" <<< "$out"; then
+    passed=$((passed + 1))
+  else
+    echo "FAIL bad_alloc: exit code $code"; echo "$out" | head -5; failed=$((failed + 1))
+  fi
+fi
 rm -rf "$out_dir"
 check missing_file "cannot open the case file" "$@" -n "$ranks" "$picdem" --check "$dir/no_such_file.yaml"
 check bad_override "key 'fluid/density' = -1 is not allowed: must be > 0" \
