@@ -130,9 +130,9 @@ void DemSolver::add_solids(const std::vector<SolidSpec>& solids) {
       m << "solid " << spec.state.id << ": density = " << spec.density << "; allowed: > 0";
       throw core::InputError(m.str());
     }
-    int index = -1;
-    for (std::size_t s = 0; s < shapes_.size(); ++s)
-      if (shapes_[s].shape == spec.shape) index = static_cast<int>(s);
+    // one entry per distinct shape; a map, as a graded packing gives each solid its own shape
+    const auto found = shape_index_.find(spec.shape.get());
+    int index = found == shape_index_.end() ? -1 : found->second;
     if (index < 0) {
       ShapeInfo info;
       info.shape = spec.shape;
@@ -142,6 +142,7 @@ void DemSolver::add_solids(const std::vector<SolidSpec>& solids) {
       info.radius = spec.shape->bounding_radius();
       index = static_cast<int>(shapes_.size());
       shapes_.push_back(std::move(info));
+      shape_index_[spec.shape.get()] = index;
     }
     const auto mp = spec.shape->mass_properties();
     SolidState s = spec.state;

@@ -9,6 +9,7 @@
 // so trajectories are bitwise identical for any number of ranks.
 #include <algorithm>
 #include <cstdint>
+#include <map>
 #include <vector>
 
 #include "picdem/core/comm.hpp"
@@ -141,6 +142,7 @@ class DemSolver {
   std::vector<std::vector<geometry::BoundaryPiece>> obstacles_;
   std::vector<core::Box2> obstacle_boxes_;
   std::vector<ShapeInfo> shapes_;
+  std::map<const geometry::Shape*, int> shape_index_;  // shapes_ index of each shape
   struct Statics {
     std::int64_t id = 0;
     int shape = 0;
