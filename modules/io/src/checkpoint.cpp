@@ -132,7 +132,11 @@ CheckpointWriter::~CheckpointWriter() {
   if (!impl_ || impl_->committed) return;
   // Abandoned write: the temporary file goes, the previous checkpoint stays.
   impl_->file.reset();
+  // The close is collective but returns on each rank in its own time: the root removes the file
+  // only once every rank has closed it, and no rank goes on before it is gone.
+  MPI_Barrier(comm_.raw());
   if (comm_.is_root()) std::remove(temporary_path().c_str());
+  MPI_Barrier(comm_.raw());
 }
 
 void CheckpointWriter::write(const std::string& name, const std::vector<double>& local) {
