@@ -1,6 +1,6 @@
 #pragma once
-// The coupled PIC-DEM run: owns the state of every module and advances it one step at a time in
-// the order of the paper's Fig. 4. Nothing here includes Trilinos or CGAL.
+// The coupled PIC-DEM run: owns every module and advances them one step at a time in the order of
+// the paper's Fig. 4. Nothing here includes Trilinos or CGAL.
 #include <memory>
 #include <string>
 #include <vector>
@@ -21,8 +21,6 @@ class DemSolver;
 }
 
 namespace picdem::coupling {
-
-struct SimulationState;
 
 /// Figures of the state, recorded every step in timeseries.csv.
 struct Diagnostics {
@@ -92,8 +90,11 @@ class Simulation {
   /// The current collision and fluid loads on every solid (ordered by id), on every rank.
   std::vector<core::SolidLoads> fluid_loads() const;
 
+  /// The modules and the run's records (simulation.cpp); opaque outside it.
+  struct Impl;
+
  private:
-  std::unique_ptr<SimulationState> s_;
+  std::unique_ptr<Impl> m_;
 };
 
 }  // namespace picdem::coupling

@@ -1,0 +1,448 @@
+#include "step_phases.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <sstream>
+
+#include "picdem/core/error.hpp"
+#include "picdem/core/timer.hpp"
+#include "picdem/coupling/free_surface.hpp"
+#include "picdem/fluid/viscous.hpp"
+#include "picdem/particles/particles.hpp"
+#include "viscous_bodies.hpp"
+
+namespace picdem::coupling {
+
+using core::Vec2;
+using grid::CellState;
+using grid::FaceField;
+using grid::Stagger;
+
+StepSettings step_settings_from(const core::Params& params) {
+  StepSettings s;
+  s.spec = grid::spec_from(params);
+  s.particles = particles::config_from(params);
+  s.cfl = params.real("time/cfl");
+  s.dt_max = params.real("time/dt_max");
+  s.dt_min = params.real("time/dt_min");
+  s.t_end = params.real("time/end");
+  s.has_fluid = !params.sublist_names("water").empty();
+  s.beta = params.real("coupling/beta");
+  s.tiny_fraction = params.real("coupling/tiny_cell_fraction");
+  s.level_probes = params.reals("output/level_probes");
+  s.solid_count_box = params.reals("output/solid_count_box");
+  if (!s.has_fluid) return s;
+  s.fluid = fluid::config_from(params);
+  s.quadrature = {params.boolean("coupling/hydrostatic_quadrature"), s.fluid.rho, s.fluid.g};
+  s.density_relaxation = params.real("free_surface/density_correction");
+  s.density_interval = params.integer("free_surface/density_correction_interval");
+  s.ghost_fluid = params.string("free_surface/method") == "ghost_fluid";
+  s.theta_min = params.real("free_surface/theta_min");
+  const double n = static_cast<double>(s.particles.per_cell_1d);
+  s.particle_mass = s.fluid.rho * s.spec.h * s.spec.h / (n * n);
+  return s;
+}
+
+double max_particle_speed(const particles::ParticleSet& P, const core::Comm& comm) {
+  double vmax = 0.0;
+  for (std::size_t n = 0; n < P.x.size(); ++n)
+    vmax = std::max(vmax, std::sqrt(P.u[n] * P.u[n] + P.w[n] * P.w[n]));
+  return comm.max(vmax);
+}
+
+double choose_time_step(const StepSettings& set, double t, long long step,
+                        const fluid::FluidState* fluid, double particle_speed,
+                        const core::Comm& comm) {
+  const double dt_max = std::min(set.dt_max, set.t_end - t);
+  if (!fluid) return dt_max;
+  // The particles may outrun the grid (FLIP): the fastest of either sets the CFL limit.
+  const double h = set.spec.h;
+  double dt =
+      std::min(dt_max, fluid::cfl_time_step(fluid->u, fluid->w, h, set.cfl, set.dt_max, comm));
+  dt = std::min(dt, fluid::viscous_time_limit(set.fluid));  // explicit viscosity's stability
+  if (particle_speed > 0.0) dt = std::min(dt, set.cfl * h / particle_speed);
+  if (!(dt >= set.dt_min) && set.t_end - t > set.dt_min) {
+    std::ostringstream m;
+    m << "step " << step << " at t = " << t << " s: the time step fell to " << dt
+      << " s (below time/dt_min): the flow has blown up";
+    throw core::SolverError(m.str());
+  }
+  return dt;
+}
+
+// Built on every rank of a run with bodies, also where none is near this step: a rank a solid
+// has just left must not keep its old apertures, nor one it is about to enter lack cut cells.
+SolidsAtStart place_solids(const Layout& L, const StepSettings& set, const dem::DemSolver* dem,
+                           const std::vector<geometry::Obstacle>& obstacles,
+                           fluid::Apertures& apertures) {
+  core::ScopedTimer timer("geometry");
+  SolidsAtStart out;
+  out.scene = scene_of(dem, obstacles);
+  if (set.has_bodies) out.cut = cut_cells(out.scene, L.d, set.tiny_fraction, apertures);
+  return out;
+}
+
+namespace {
+
+// A cut cell whose sliver of fluid holds no particle, with S <= 1/2 at its (covered) centre, would
+// be air: p = 0 inside the water, and a pressure jump that drives the flow through its faces at
+// many times the speed around it. Such cells are taken in groups connected through open faces
+// (two slivers side by side on a body); a group whose every other neighbour across an open face
+// is fluid (or solid) cannot be at the free surface: it is fluid.
+void wet_enclosed_cut_cells(const grid::Decomposition& d, const geometry::CutCells& cut,
+                            const fluid::Apertures& E, fluid::CellStates& cells) {
+  const auto fluid = static_cast<signed char>(CellState::Fluid);
+  const auto air = static_cast<signed char>(CellState::Air);
+  const auto solid = static_cast<signed char>(CellState::Solid);
+  const auto& spec = d.spec();
+  const auto b = cells.storage();
+  auto candidate = [&](int i, int k) {
+    return cells.in_storage(i, k) && cells(i, k) == air && cut.fluid_fraction(i, k) < 1.0;
+  };
+  grid::GridArray<signed char> seen(d, Stagger::Cell, 0);
+  std::vector<std::pair<int, int>> group, todo;
+  for (int k = b.k0; k < b.k1; ++k)
+    for (int i = b.i0; i < b.i1; ++i) {
+      if (seen(i, k) || !candidate(i, k)) continue;
+      group.clear();
+      todo.assign(1, {i, k});
+      seen(i, k) = 1;
+      bool enclosed = true;
+      while (!todo.empty()) {
+        const auto [ci, ck] = todo.back();
+        todo.pop_back();
+        group.emplace_back(ci, ck);
+        const struct {
+          double E;
+          int i, k;
+        } faces[4] = {{E.E_x(ci, ck), ci - 1, ck},
+                      {E.E_x(ci + 1, ck), ci + 1, ck},
+                      {E.E_z(ci, ck), ci, ck - 1},
+                      {E.E_z(ci, ck + 1), ci, ck + 1}};
+        for (const auto& f : faces) {
+          if (f.E <= 0.0 || f.i < 0 || f.k < 0 || f.i >= spec.nx || f.k >= spec.nz) continue;
+          if (!cells.in_storage(f.i, f.k)) {
+            enclosed = false;  // the group reaches the edge of this rank's window
+            continue;
+          }
+          if (candidate(f.i, f.k)) {
+            if (!seen(f.i, f.k)) seen(f.i, f.k) = 1, todo.emplace_back(f.i, f.k);
+            continue;
+          }
+          const signed char nb = cells(f.i, f.k);
+          enclosed = enclosed && (nb == fluid || nb == solid);
+        }
+      }
+      if (enclosed)
+        for (const auto& [gi, gk] : group) cells(gi, gk) = fluid;
+    }
+}
+
+// Occupancy S of the particles, divided by the tent's open share next to solids.
+void occupancy(const Layout& L, const StepSettings& set, const geometry::CutCells& cut,
+               const particles::ParticleSet& particles, grid::CellField& S) {
+  const int per_cell = set.particles.per_cell_1d * set.particles.per_cell_1d;
+  particle_occupancy(particles, L.d, L.halo, per_cell, S);
+  if (set.has_bodies) open_share_correction(S, cut, L.d);
+}
+
+}  // namespace
+
+// The particle occupancy S and the level set phi = 1/2 - S (free_surface.hpp), S divided by the
+// share of the tent kernel open to fluid so that solids do not read as air. Cells: fluid = holds
+// particles, or is a cut cell below the free surface (phi < 0: a cut cell may hold no particle in
+// its sliver of fluid); solid = covered; air otherwise.
+void mark_cells(const Layout& L, const StepSettings& set, const geometry::CutCells& cut,
+                const particles::ParticleSet& particles, fluid::FluidState& fluid) {
+  core::ScopedTimer timer("transfer: mark cells");
+  grid::GridArray<int> count(L.d, Stagger::Cell, 0);
+  particles::count_per_cell(particles, L.halo, count);
+  occupancy(L, set, cut, particles, fluid.occupancy);
+  const auto b = fluid.cells.storage();
+  for (int k = b.k0; k < b.k1; ++k)
+    for (int i = b.i0; i < b.i1; ++i) {
+      CellState c = count(i, k) > 0 ? CellState::Fluid : CellState::Air;
+      const double S = fluid.occupancy(i, k);
+      if (set.has_bodies) {
+        const double f = cut.fluid_fraction(i, k);
+        if (f <= 0.0)
+          c = CellState::Solid;
+        else if (c == CellState::Air && f < 1.0 && S > 0.5)
+          c = CellState::Fluid;
+      }
+      fluid.phi(i, k) = 0.5 - S;
+      fluid.cells(i, k) = static_cast<signed char>(c);
+    }
+  if (set.has_bodies) {
+    wet_enclosed_cut_cells(L.d, cut, fluid.apertures, fluid.cells);
+    // A group reaching the edge of one rank's window is seen whole by its owner: owners decide.
+    L.halo.forward(fluid.cells);
+  }
+  if (set.ghost_fluid)
+    fluid.surface = fluid::surface_fractions(fluid.phi, fluid.cells, L.d, set.theta_min);
+}
+
+namespace {
+
+// Faces carrying fluid velocity (open, next to a fluid cell), plus faces closed by a body, which
+// carry its rigid velocity (scene: the solids' velocities); then velocities are extended into the
+// rest. `mask`: recompute the fluid-face mask (else the one of the last call is kept: cells and
+// apertures unchanged since, and the covered faces are the same).
+void extend(const Layout& L, const StepSettings& set, const SolidScene& scene,
+            const geometry::CutCells& cut, bool mask, fluid::FluidState& f) {
+  if (mask) fluid::fluid_faces(f.cells, f.apertures, f.u_valid, f.w_valid);
+  if (set.has_bodies)
+    rigid_face_velocities(scene, cut, f.apertures, L.d, f.u, f.w, f.u_valid, f.w_valid);
+  fluid::extend_velocity(f.u, f.w, f.u_valid, f.w_valid, L.d.halo(), L.halo);
+}
+
+}  // namespace
+
+// u~ before forces is kept for the FLIP increment.
+void particles_to_grid(const Layout& L, const StepSettings& set, const SolidsAtStart& solids,
+                       const particles::ParticleSet& particles, fluid::FluidState& f) {
+  core::ScopedTimer timer("transfer: particles to grid");
+  particles::to_grid(particles, L.d, L.halo, set.particles, f.u, f.w, f.weight_u, f.weight_w);
+  fluid::enforce_walls(f.u, f.w, set.fluid, L.d);
+  extend(L, set, solids.scene, solids.cut, true, f);
+  f.u_old = f.u, f.w_old = f.w;
+}
+
+// Viscosity explicit, or implicit at the true boundaries of the scene's bodies.
+void add_forces(const Layout& L, const fluid::FluidConfig& cfg, const SolidScene& scene, double dt,
+                fluid::FluidState& f) {
+  core::ScopedTimer timer("forces");
+  fluid::apply_gravity(f.u, f.w, f.cells, dt, cfg);
+  if (cfg.implicit_viscosity)
+    fluid::apply_viscosity_implicit(f.u, f.w, f.cells, dt, cfg, L.d, L.halo, viscous_bodies(scene));
+  else
+    fluid::apply_viscosity(f.u, f.w, f.cells, dt, cfg, L.d, L.halo);
+  fluid::enforce_walls(f.u, f.w, cfg, L.d);
+}
+
+// Collision loads for eq. 6 inside the PPE.
+std::vector<core::SolidLoads> predict_contacts(const dem::DemSolver* dem, double dt) {
+  core::ScopedTimer timer("contact prediction");
+  return dem ? dem->predicted_collision_loads(dt) : std::vector<core::SolidLoads>{};
+}
+
+// The E-weighted PPE with the solids' velocities substituted (eqs. 5-6), solved implicitly.
+fluid::SolveStats solve_pressure(const Layout& L, const StepSettings& set,
+                                 const SolidsAtStart& solids,
+                                 const std::vector<core::SolidLoads>& collision, double dt,
+                                 fluid::PressureSolver& solver, fluid::FluidState& f) {
+  std::vector<fluid::SolidCoupling> couplings;
+  if (set.has_solids) {  // collective: on every rank of a run with solids
+    core::ScopedTimer timer("geometry");
+    couplings = solid_couplings(solids.scene, solids.cut, f.cells, L.d, collision, set.quadrature,
+                                dt, L.comm);
+  }
+  core::ScopedTimer timer("pressure");
+  return solver.solve(f.cells, f.apertures, f.u, f.w, couplings, dt, set.fluid, f.p,
+                      set.ghost_fluid ? &f.surface : nullptr);
+}
+
+void project(const Layout& L, const StepSettings& set, double dt, fluid::FluidState& f) {
+  core::ScopedTimer timer("project");
+  fluid::project(f.u, f.w, f.p, f.cells, f.apertures, dt, set.fluid,
+                 set.ghost_fluid ? &f.surface : nullptr);
+  fluid::enforce_walls(f.u, f.w, set.fluid, L.d);
+}
+
+// F_fluid = J p^{n+1} from the rows of the pressure solve, then K DEM subcycles with it fixed.
+std::vector<core::SolidLoads> advance_solids(const fluid::PressureSolver* pressure,
+                                             const fluid::FluidState* fluid, double dt,
+                                             dem::DemSolver& dem) {
+  core::ScopedTimer timer("solids");
+  std::vector<core::SolidLoads> loads;
+  if (pressure && fluid) loads = fluid_loads(*pressure, fluid->p, dem);
+  dem.advance(dt, loads);
+  return loads;
+}
+
+// Faces closed by solids carry the solids' new rigid velocities, in u_old as well: the FLIP
+// increment u - u_old is the fluid's change only, not a body sweeping over a face.
+void grid_to_particles(const Layout& L, const StepSettings& set, const SolidsAtStart& solids,
+                       const SolidScene& after, const dem::DemSolver* dem, fluid::FluidState& f,
+                       particles::ParticleSet& particles) {
+  core::ScopedTimer timer("transfer: grid to particles");
+  extend(L, set, after, solids.cut, false, f);
+  fluid::enforce_walls(f.u, f.w, set.fluid, L.d);
+  if (set.has_bodies) {
+    const auto& spec = set.spec;
+    const auto bu = f.u.storage(), bw = f.w.storage();
+    for (int k = bu.k0; k < bu.k1; ++k)
+      for (int i = bu.i0; i < bu.i1; ++i)
+        if (i > 0 && i < spec.nx && f.apertures.E_x(i, k) <= 0.0) f.u_old(i, k) = f.u(i, k);
+    for (int k = bw.k0; k < bw.k1; ++k)
+      for (int i = bw.i0; i < bw.i1; ++i)
+        if (k > 0 && k < spec.nz && f.apertures.E_z(i, k) <= 0.0) f.w_old(i, k) = f.w(i, k);
+  }
+  particles::from_grid(particles, set.particles, f.u_old, f.w_old, f.u, f.w, set.spec);
+  if (dem && set.beta < 1.0)
+    damp_gap_particles(particles, all_contacts(*dem, L.comm), set.spec.h, set.beta);
+}
+
+namespace {
+
+// A particle that ends inside a solid goes just outside it (none without bodies).
+std::function<void(double&, double&)> push_out_of_solids(const StepSettings& set,
+                                                         const SolidLocator& locator) {
+  if (!set.has_bodies) return {};
+  const double h = set.spec.h;
+  return [&locator, h](double& x, double& z) { push_out(locator, h, x, z); };
+}
+
+// Closed faces (walls, bodies) hold 0 and count as known; the rest is extended.
+void extend_displacement(const Layout& L, const fluid::FluidConfig& unit,
+                         const fluid::FluidState& f, FaceField& dx, FaceField& dz) {
+  grid::GridArray<signed char> du(L.d, Stagger::FaceX, 0), dw(L.d, Stagger::FaceZ, 0);
+  fluid::fluid_faces(f.cells, f.apertures, du, dw);
+  for (auto [valid, E] : {std::pair{&du, &f.apertures.E_x}, std::pair{&dw, &f.apertures.E_z}}) {
+    const auto b = valid->storage();
+    for (int k = b.k0; k < b.k1; ++k)
+      for (int i = b.i0; i < b.i1; ++i)
+        if ((*E)(i, k) <= 0.0) (*valid)(i, k) = 1;
+  }
+  L.halo.forward(dx), L.halo.forward(dz);
+  fluid::enforce_walls(dx, dz, unit, L.d);
+  fluid::extend_velocity(dx, dz, du, dw, L.d.halo(), L.halo);
+}
+
+}  // namespace
+
+// Particles crowded above the bulk density (S > 1), or thinned inside the water, are moved
+// (positions only: velocities untouched) by d = -grad q, with -L_E q = the excess area of
+// free_surface.hpp: the divergence of the displacement is that excess. Solids are fixed walls of
+// this Poisson equation; q = 0 on the free surface.
+bool correct_density(const Layout& L, const StepSettings& set, long long step,
+                     const SolidsAtStart& solids, const fluid::FluidState& f,
+                     fluid::PressureSolver* solver, particles::ParticleSet& particles) {
+  if (set.density_relaxation <= 0.0 || step % set.density_interval != 0) return false;
+  core::ScopedTimer timer("density correction");
+  const auto& d = L.d;
+  constexpr double cap = 0.5;  // |S - 1| taken at most: half a cell's particles per step
+  grid::CellField source(d, Stagger::Cell, 0.0);
+  const bool mine = excess_area(f.occupancy, f.cells, set.has_bodies ? &solids.cut : nullptr,
+                                set.density_relaxation, cap, d, source);
+  if (!L.comm.any(mine)) return false;
+  fluid::FluidConfig unit = set.fluid;
+  unit.rho = 1.0, unit.no_slip = false;
+  const fluid::SurfaceFractions* surface = set.ghost_fluid ? &f.surface : nullptr;
+  FaceField dx(d, Stagger::FaceX, 0.0), dz(d, Stagger::FaceZ, 0.0);
+  grid::CellField q(d, Stagger::Cell, 0.0);
+  solver->solve(f.cells, f.apertures, dx, dz, {}, 1.0, unit, q, surface, &source);
+  fluid::project(dx, dz, q, f.cells, f.apertures, 1.0, unit, surface);
+  // A displacement of more than half a cell would skip the stencil: capped.
+  const double most = 0.5 * set.spec.h;
+  for (auto* g : {&dx, &dz}) {
+    const auto b = g->storage();
+    for (int k = b.k0; k < b.k1; ++k)
+      for (int i = b.i0; i < b.i1; ++i) (*g)(i, k) = std::clamp((*g)(i, k), -most, most);
+  }
+  extend_displacement(L, unit, f, dx, dz);
+  const SolidLocator locator(solids.scene);
+  particles::advect(particles, set.particles, dx, dz, set.spec, 1.0,
+                    push_out_of_solids(set, locator));
+  particles::migrate(particles, d);
+  return true;
+}
+
+// A cut cell holds fewer particles than a full one (its fluid part is smaller): reseeding it up
+// to particles/min_per_cell would add water every step. Cut cells are left out of reseeding.
+void advect_particles(const Layout& L, const StepSettings& set, long long step,
+                      const geometry::CutCells& cut, const SolidScene& after, double dt,
+                      const fluid::FluidState& f, particles::ParticleSet& particles) {
+  core::ScopedTimer timer("advect");
+  const SolidLocator locator(after);
+  const bool solids = set.has_bodies;
+  const auto out_of_solids = push_out_of_solids(set, locator);
+  // A blown-up advection is found on one rank: stop every rank with the message, never just one.
+  std::string failure;
+  try {
+    particles::advect(particles, set.particles, f.u, f.w, set.spec, dt, out_of_solids);
+  } catch (const core::SolverError& e) {
+    failure = e.what();
+  }
+  if (L.comm.any(!failure.empty())) {
+    std::string first = failure;
+    for (int r = 0; r < L.comm.size(); ++r) {
+      const std::string theirs = L.comm.broadcast(failure, r);
+      if (first.empty() && !theirs.empty()) first = theirs;
+    }
+    throw core::SolverError(first);
+  }
+  particles::migrate(particles, L.d);
+  grid::GridArray<int> count(L.d, Stagger::Cell, 0);
+  particles::count_per_cell(particles, L.halo, count);
+  std::function<bool(Vec2)> reject;
+  if (solids) reject = [&](Vec2 p) { return locator.inside(p); };
+  const fluid::CellStates* reseed_cells = &f.cells;
+  fluid::CellStates uncut;
+  if (solids) {
+    uncut = f.cells;
+    const auto b = uncut.storage();
+    for (int k = b.k0; k < b.k1; ++k)
+      for (int i = b.i0; i < b.i1; ++i)
+        if (cut.fluid_fraction(i, k) < 1.0)
+          uncut(i, k) = static_cast<signed char>(CellState::Solid);
+    reseed_cells = &uncut;
+  }
+  particles::reseed(particles, set.particles, L.d, count, *reseed_cells, f.u, f.w, step, reject);
+}
+
+Diagnostics record_diagnostics(const Layout& L, const StepSettings& set, double t, long long step,
+                               double dt, const fluid::SolveStats& solve,
+                               const particles::ParticleSet& P, const dem::DemSolver* dem,
+                               const SolidsAtStart* solids, fluid::FluidState* fluid) {
+  const core::Comm& comm = L.comm;
+  Diagnostics g;
+  g.t = t, g.dt = dt, g.step = step;
+  g.ppe_iterations = solve.iterations;
+  g.ppe_residual = solve.relative_residual;
+  g.ppe_structure_reused = solve.reused_structure;
+  double ke = 0.0, front = -std::numeric_limits<double>::infinity(), vmax = 0.0;
+  bool finite = true;
+  for (std::size_t n = 0; n < P.x.size(); ++n) {
+    const double v2 = P.u[n] * P.u[n] + P.w[n] * P.w[n];
+    ke += 0.5 * set.particle_mass * v2;
+    front = std::max(front, P.x[n]);
+    vmax = std::max(vmax, std::sqrt(v2));
+    finite = finite && std::isfinite(v2) && std::isfinite(P.x[n]) && std::isfinite(P.z[n]);
+  }
+  double ke_solids = 0.0;
+  if (dem)
+    for (const auto& st : dem->owned()) {
+      ke_solids += 0.5 * st.mass * core::norm2(st.v) + 0.5 * st.inertia * st.omega * st.omega;
+      finite = finite && std::isfinite(st.x.x) && std::isfinite(st.x.z) && std::isfinite(st.v.x);
+    }
+  if (comm.any(!finite)) {
+    std::ostringstream m;
+    m << "step " << step << " at t = " << t
+      << " s: a particle or solid has a non-finite position or velocity: the run has blown up";
+    throw core::SolverError(m.str());
+  }
+  g.kinetic_energy = comm.sum(ke);
+  g.solid_kinetic_energy = comm.sum(ke_solids);
+  g.front_x = fluid ? comm.max(front) - set.spec.origin.x : 0.0;
+  g.max_speed = comm.max(vmax);
+  g.particles = comm.sum(static_cast<long long>(P.x.size()));
+  if (fluid) {
+    occupancy(L, set, solids->cut, P, fluid->occupancy);
+    g.fluid_volume =
+        occupied_area(fluid->occupancy, L.d, comm, set.has_bodies ? &solids->cut : nullptr);
+  }
+  for (double x : set.level_probes)
+    g.levels.push_back(fluid ? fluid->surface_height(x) : std::nan(""));
+  const auto& box = set.solid_count_box;
+  long long inside = 0;
+  if (dem && box.size() == 4)
+    for (const auto& st : dem->owned())
+      inside += st.x.x >= box[0] && st.x.x <= box[1] && st.x.z >= box[2] && st.x.z <= box[3];
+  g.solids_in_box = comm.sum(inside);
+  return g;
+}
+
+}  // namespace picdem::coupling

@@ -1,0 +1,124 @@
+#pragma once
+// The phases of the coupled step (paper Fig. 4), each a function of what it reads (values and
+// const references) and what it changes (the one non-const module it advances). Simulation::step
+// calls them in order; nothing here keeps state between steps. Private to the coupling module.
+#include <vector>
+
+#include "picdem/core/comm.hpp"
+#include "picdem/core/solid_state.hpp"
+#include "picdem/coupling/simulation.hpp"
+#include "picdem/coupling/solids_in_fluid.hpp"
+#include "picdem/dem/dem_solver.hpp"
+#include "picdem/fluid/fluid.hpp"
+#include "picdem/fluid/fluid_state.hpp"
+#include "picdem/fluid/pressure_solver.hpp"
+#include "picdem/geometry/cut_cells.hpp"
+#include "picdem/grid/field.hpp"
+#include "picdem/particles/particle_set.hpp"
+
+namespace picdem::coupling {
+
+/// The parallel layout every phase works on.
+struct Layout {
+  const grid::Decomposition& d;
+  const grid::Halo& halo;
+  const core::Comm& comm;
+};
+
+/// The step's settings, read once from the validated case.
+struct StepSettings {
+  grid::GridSpec spec;
+  fluid::FluidConfig fluid;
+  particles::ParticleConfig particles;
+  double cfl = 0.5, dt_max = 0.0, dt_min = 0.0, t_end = 0.0;  ///< time/*
+  bool has_fluid = false;
+  bool has_solids = false;   ///< the run has a DEM (solids; or no water)
+  bool has_bodies = false;   ///< solids or obstacles anywhere in the run (every rank alike)
+  bool ghost_fluid = true;   ///< sub-cell free surface (else p = 0 at air cell centres)
+  double theta_min = 0.01;   ///< free_surface/theta_min
+  double tiny_fraction = 0;  ///< coupling/tiny_cell_fraction
+  double beta = 1.0;         ///< coupling/beta, eq. 20
+  QuadratureOptions quadrature;
+  double density_relaxation = 0.0;                    ///< free_surface/density_correction
+  long long density_interval = 1;                     ///< free_surface/density_correction_interval
+  double particle_mass = 0.0;                         ///< per unit depth
+  std::vector<double> level_probes, solid_count_box;  ///< output/*
+};
+StepSettings step_settings_from(const core::Params& params);
+
+/// The solids as the fluid sees them at X^n: poses and velocities (the scene) and the cut cells
+/// built from them (cut body b is scene.placements[b]). Built once per step, then only read.
+struct SolidsAtStart {
+  SolidScene scene;
+  geometry::CutCells cut;
+};
+
+/// Collective: the largest particle speed |v| over all ranks (0 without particles).
+double max_particle_speed(const particles::ParticleSet& particles, const core::Comm& comm);
+
+/// time step: CFL on the grid velocity (fluid: nullptr without water) and on the particles'
+/// fastest speed, capped by dt_max and the end time; a collapse below dt_min is a blown-up run.
+double choose_time_step(const StepSettings& set, double t, long long step,
+                        const fluid::FluidState* fluid, double particle_speed,
+                        const core::Comm& comm);
+
+/// geometry: solids at X^n -> cut cells and the fluid's apertures E.
+SolidsAtStart place_solids(const Layout& L, const StepSettings& set, const dem::DemSolver* dem,
+                           const std::vector<geometry::Obstacle>& obstacles,
+                           fluid::Apertures& apertures);
+
+/// transfer (cells): occupancy S, level set phi, cell states, surface fractions.
+void mark_cells(const Layout& L, const StepSettings& set, const geometry::CutCells& cut,
+                const particles::ParticleSet& particles, fluid::FluidState& fluid);
+
+/// density: moves crowded or thinned particles (positions only); true when they moved. `solver`
+/// (its Poisson equation) may be null when free_surface/density_correction is 0.
+bool correct_density(const Layout& L, const StepSettings& set, long long step,
+                     const SolidsAtStart& solids, const fluid::FluidState& fluid,
+                     fluid::PressureSolver* solver, particles::ParticleSet& particles);
+
+/// transfer: particles -> faces, walls, fluid-face mask, rigid faces, extension; u_old = u.
+void particles_to_grid(const Layout& L, const StepSettings& set, const SolidsAtStart& solids,
+                       const particles::ParticleSet& particles, fluid::FluidState& fluid);
+
+/// forces: gravity and viscosity (explicit, or implicit at the bodies of `scene`) -> u~.
+void add_forces(const Layout& L, const fluid::FluidConfig& cfg, const SolidScene& scene, double dt,
+                fluid::FluidState& fluid);
+
+/// contact: collision loads predicted at level n with dt in eq. 8 (none without solids).
+std::vector<core::SolidLoads> predict_contacts(const dem::DemSolver* dem, double dt);
+
+/// pressure: the augmented PPE (eqs. 5-6) for p^{n+1}, the previous p as initial guess.
+fluid::SolveStats solve_pressure(const Layout& L, const StepSettings& set,
+                                 const SolidsAtStart& solids,
+                                 const std::vector<core::SolidLoads>& collision, double dt,
+                                 fluid::PressureSolver& solver, fluid::FluidState& fluid);
+
+/// project: u^{n+1} = u~ - dt/rho grad p on open faces.
+void project(const Layout& L, const StepSettings& set, double dt, fluid::FluidState& fluid);
+
+/// solids: F_fluid = J p^{n+1} from the last solve of `pressure` (none in a dry run: pressure =
+/// fluid = nullptr), then the DEM subcycles (eqs. 21-25). Returns the fluid loads used.
+std::vector<core::SolidLoads> advance_solids(const fluid::PressureSolver* pressure,
+                                             const fluid::FluidState* fluid, double dt,
+                                             dem::DemSolver& dem);
+
+/// transfer: grid -> particles with the solids at X^{n+1} on covered faces, then gap damping
+/// (eq. 20) at the contacts of X^{n+1}.
+void grid_to_particles(const Layout& L, const StepSettings& set, const SolidsAtStart& solids,
+                       const SolidScene& after, const dem::DemSolver* dem, fluid::FluidState& fluid,
+                       particles::ParticleSet& particles);
+
+/// advect: through the divergence-free field, out of the solids at X^{n+1}, migrate, reseed.
+void advect_particles(const Layout& L, const StepSettings& set, long long step,
+                      const geometry::CutCells& cut, const SolidScene& after, double dt,
+                      const fluid::FluidState& fluid, particles::ParticleSet& particles);
+
+/// Figures of the state after the step (t, step: its end); a non-finite particle or solid
+/// anywhere stops the run on every rank. fluid/solids: nullptr without water.
+Diagnostics record_diagnostics(const Layout& L, const StepSettings& set, double t, long long step,
+                               double dt, const fluid::SolveStats& solve,
+                               const particles::ParticleSet& particles, const dem::DemSolver* dem,
+                               const SolidsAtStart* solids, fluid::FluidState* fluid);
+
+}  // namespace picdem::coupling
