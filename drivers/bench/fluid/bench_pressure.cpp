@@ -16,6 +16,7 @@
 
 #include "picdem/core/log.hpp"
 #include "picdem/core/rng.hpp"
+#include "picdem/core/timer.hpp"
 #include "picdem/fluid/fluid.hpp"
 #include "picdem/fluid/pressure_solver.hpp"
 
@@ -127,5 +128,12 @@ int main(int argc, char** argv) {
                     best_setup + best_solve, best_kept, best_assembly);
     }
   }
+  // Where the solver's time went, summed over every solve above (slowest rank).
+  const auto totals = core::timer_totals();
+  for (const auto& [name, seconds] : totals)
+    if (name.rfind("fluid: pressure", 0) == 0) {
+      const double t = comm.max(seconds);
+      if (comm.is_root()) std::printf("  %-34s %8.3f s\n", name.c_str(), t);
+    }
   return 0;
 }

@@ -46,8 +46,19 @@ void TpetraSystem::rebuild(const RowContributions& rows, const grid::Decompositi
   // solve was measured to give wrong answers on maps of the non-contiguous cell ids.
   asm_map_ = rcp(new Map(static_cast<Tpetra::global_size_t>(unknowns), static_cast<std::size_t>(n),
                          0, tcomm_));
-  build_source(rows, column_gids(rows, d));
-  build_solve_side(rows, d, rebalance);
+  std::vector<GO> col_gid;
+  {
+    core::ScopedTimer t("fluid: pressure structure 1 columns");
+    col_gid = column_gids(rows, d);
+  }
+  {
+    core::ScopedTimer t("fluid: pressure structure 2 assembly matrix");
+    build_source(rows, col_gid, !(rebalance && d.comm().size() > 1));
+  }
+  {
+    core::ScopedTimer t("fluid: pressure structure 3 solve matrix");
+    build_solve_side(rows, d, rebalance);
+  }
   key_cells_ = rows.cells, key_row_ = rows.row, key_col_ = rows.col;
   rebalance_ = rebalance;
   built_ = true;
@@ -102,19 +113,18 @@ std::vector<TpetraSystem::GO> TpetraSystem::column_gids(const RowContributions& 
 
 /// S on the assembly map from local CSR arrays: column map = own rows, then the other columns in
 /// increasing number; the CSR slot of every contribution is kept for the refills.
-void TpetraSystem::build_source(const RowContributions& rows, const std::vector<GO>& col_gid) {
+void TpetraSystem::build_source(const RowContributions& rows, const std::vector<GO>& col_gid,
+                                bool make_matrix) {
   const auto n = static_cast<GO>(rows.cells.size());
   std::vector<GO> remote;
   for (GO c : col_gid)
     if (c < offset_ || c >= offset_ + n) remote.push_back(c);
   std::sort(remote.begin(), remote.end());
   remote.erase(std::unique(remote.begin(), remote.end()), remote.end());
-  std::vector<GO> col_gids(static_cast<std::size_t>(n));
+  std::vector<GO>& col_gids = s_col_gids_;
+  col_gids.assign(static_cast<std::size_t>(n), 0);
   std::iota(col_gids.begin(), col_gids.end(), offset_);
   col_gids.insert(col_gids.end(), remote.begin(), remote.end());
-  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
-  RCP<const Map> col_map = rcp(
-      new Map(invalid, Teuchos::ArrayView<const GO>(col_gids.data(), col_gids.size()), 0, tcomm_));
   const std::size_t nc = col_gid.size();
   std::vector<LO> lid(nc);
   for (std::size_t c = 0; c < nc; ++c)
@@ -122,35 +132,43 @@ void TpetraSystem::build_source(const RowContributions& rows, const std::vector<
                  ? static_cast<LO>(col_gid[c] - offset_)
                  : static_cast<LO>(n + (std::lower_bound(remote.begin(), remote.end(), col_gid[c]) -
                                         remote.begin()));
-  std::vector<std::size_t> order(nc);
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return rows.row[a] != rows.row[b] ? rows.row[a] < rows.row[b] : lid[a] < lid[b];
-  });
+  // Contributions bucketed by row (in contribution order), then each row's sorted by column.
+  std::vector<std::size_t> first(static_cast<std::size_t>(n) + 1, 0), order(nc);
+  for (std::size_t c = 0; c < nc; ++c) ++first[static_cast<std::size_t>(rows.row[c]) + 1];
+  for (std::size_t r = 0; r < static_cast<std::size_t>(n); ++r) first[r + 1] += first[r];
+  {
+    std::vector<std::size_t> next(first.begin(), first.end() - 1);
+    for (std::size_t c = 0; c < nc; ++c) order[next[static_cast<std::size_t>(rows.row[c])]++] = c;
+  }
   row_ptr_ = Teuchos::ArrayRCP<std::size_t>(static_cast<std::size_t>(n) + 1, 0);
   std::vector<LO> cols;
+  cols.reserve(nc);
   pos_.assign(nc, 0);
-  for (std::size_t m = 0; m < nc; ++m) {
-    const std::size_t c = order[m];
-    const bool fresh =
-        m == 0 || rows.row[order[m - 1]] != rows.row[c] || lid[order[m - 1]] != lid[c];
-    if (fresh) {
-      cols.push_back(lid[c]);
-      ++row_ptr_[static_cast<std::size_t>(rows.row[c]) + 1];
+  for (std::size_t r = 0; r < static_cast<std::size_t>(n); ++r) {
+    const auto b = order.begin() + static_cast<std::ptrdiff_t>(first[r]);
+    const auto e = order.begin() + static_cast<std::ptrdiff_t>(first[r + 1]);
+    std::stable_sort(b, e, [&](std::size_t x, std::size_t y) { return lid[x] < lid[y]; });
+    for (auto it = b; it != e; ++it) {
+      if (it == b || lid[*(it - 1)] != lid[*it]) cols.push_back(lid[*it]);
+      pos_[*it] = cols.size() - 1;
     }
-    pos_[c] = cols.size() - 1;
+    row_ptr_[r + 1] = cols.size();
   }
-  for (std::size_t r = 0; r < static_cast<std::size_t>(n); ++r) row_ptr_[r + 1] += row_ptr_[r];
   col_idx_ = Teuchos::ArrayRCP<LO>(cols.size());
   std::copy(cols.begin(), cols.end(), col_idx_.begin());
   values_.assign(cols.size(), 0.0);
+  S_ = Teuchos::null;
+  if (!make_matrix) return;
+  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+  RCP<const Map> col_map = rcp(
+      new Map(invalid, Teuchos::ArrayView<const GO>(col_gids.data(), col_gids.size()), 0, tcomm_));
   RCP<Graph> graph = rcp(new Graph(asm_map_, col_map, row_ptr_, col_idx_));
   graph->expertStaticFillComplete(asm_map_, asm_map_);
   S_ = rcp(new Matrix(RCP<const Graph>(graph)));
 }
 
 /// The solve map (an even split of the numbering, or the assembly map), the Export to it, A's
-/// graph (S's rows sent there), the cell-centre coordinates and the vectors.
+/// graph (S's graph exported there), the cell-centre coordinates and the vectors.
 void TpetraSystem::build_solve_side(const RowContributions& rows, const grid::Decomposition& d,
                                     bool rebalance) {
   const core::Comm& comm = d.comm();
@@ -180,7 +198,7 @@ void TpetraSystem::build_solve_side(const RowContributions& rows, const grid::De
   solve_map_ = rcp(
       new Map(static_cast<Tpetra::global_size_t>(N), static_cast<std::size_t>(hi - lo), 0, tcomm_));
   export_ = rcp(new Tpetra::Export<>(asm_map_, solve_map_));
-  // A's rows have the lengths of S's rows they come from.
+  // A's rows have the lengths of the assembled rows they come from.
   Tpetra::Vector<double> len_asm(asm_map_), len(solve_map_);
   {
     auto v = len_asm.getDataNonConst();
@@ -190,33 +208,98 @@ void TpetraSystem::build_solve_side(const RowContributions& rows, const grid::De
   len.doExport(len_asm, *export_, Tpetra::INSERT);
   std::vector<std::size_t> counts;
   for (double v : len.getData()) counts.push_back(static_cast<std::size_t>(v));
-  S_->fillComplete(asm_map_, asm_map_);  // values do not matter for the structure
-  Matrix first(solve_map_, Teuchos::ArrayView<const std::size_t>(counts.data(), counts.size()));
-  first.doExport(*S_, *export_, Tpetra::INSERT);
-  first.fillComplete(solve_map_, solve_map_);
-  A_ = rcp(new Matrix(first.getCrsGraph()));
+  build_moved_rows(counts, comm, lo, hi);
   coords_ = rcp(new MV(solve_map_, 2));
   coords_->doExport(*coords_asm, *export_, Tpetra::INSERT);
   X_ = rcp(new MV(solve_map_, 1)), B_ = rcp(new MV(solve_map_, 1));
   X_asm_ = rcp(new MV(asm_map_, 1)), B_asm_ = rcp(new MV(asm_map_, 1));
 }
 
-/// Values of S from the contributions (summed per slot in contribution order), and A from S.
+/// The nonzeros are numbered contiguously in row order over the ranks; rows move whole, so the
+/// nonzeros of the solve rows [lo, hi) are a contiguous range too and one Export of a vector over
+/// the nonzeros moves their column numbers now and their values at every solve. A is built here
+/// from local CSR arrays with a prepared column map (its own rows, then the others sorted), and
+/// a_from_ says which received nonzero fills each of its slots.
+void TpetraSystem::build_moved_rows(const std::vector<std::size_t>& counts, const core::Comm& comm,
+                                    long long lo, long long hi) {
+  const std::size_t nnz = row_ptr_[row_ptr_.size() - 1];
+  std::size_t a_nnz = 0;
+  for (std::size_t c : counts) a_nnz += c;
+  const auto total = static_cast<Tpetra::global_size_t>(comm.sum(static_cast<long long>(nnz)));
+  nnz_src_ = rcp(new Tpetra::Vector<>(rcp(new Map(total, nnz, 0, tcomm_))));
+  nnz_dst_ = rcp(new Tpetra::Vector<>(rcp(new Map(total, a_nnz, 0, tcomm_))));
+  nnz_export_ = rcp(new Tpetra::Export<>(nnz_src_->getMap(), nnz_dst_->getMap()));
+  {
+    auto v = nnz_src_->getDataNonConst();
+    for (std::size_t j = 0; j < nnz; ++j)
+      v[j] = static_cast<double>(s_col_gids_[static_cast<std::size_t>(col_idx_[j])]);
+  }
+  nnz_dst_->doExport(*nnz_src_, *nnz_export_, Tpetra::INSERT);
+  const auto col = nnz_dst_->getData();
+  std::vector<GO> remote;
+  for (double c : col)
+    if (static_cast<GO>(c) < lo || static_cast<GO>(c) >= hi) remote.push_back(static_cast<GO>(c));
+  std::sort(remote.begin(), remote.end());
+  remote.erase(std::unique(remote.begin(), remote.end()), remote.end());
+  std::vector<GO> col_gids(static_cast<std::size_t>(hi - lo));
+  std::iota(col_gids.begin(), col_gids.end(), lo);
+  col_gids.insert(col_gids.end(), remote.begin(), remote.end());
+  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+  RCP<const Map> col_map = rcp(
+      new Map(invalid, Teuchos::ArrayView<const GO>(col_gids.data(), col_gids.size()), 0, tcomm_));
+  a_row_ptr_ = Teuchos::ArrayRCP<std::size_t>(counts.size() + 1, 0);
+  a_col_idx_ = Teuchos::ArrayRCP<LO>(a_nnz);
+  a_from_.assign(a_nnz, 0);
+  std::vector<std::pair<LO, std::size_t>> row;
+  for (std::size_t r = 0, k = 0; r < counts.size(); ++r) {
+    row.clear();
+    for (std::size_t m = 0; m < counts[r]; ++m, ++k) {
+      const auto g = static_cast<GO>(col[k]);
+      row.emplace_back(
+          g >= lo && g < hi
+              ? static_cast<LO>(g - lo)
+              : static_cast<LO>(
+                    hi - lo + (std::lower_bound(remote.begin(), remote.end(), g) - remote.begin())),
+          k);
+    }
+    std::sort(row.begin(), row.end());
+    const std::size_t b = a_row_ptr_[r];
+    for (std::size_t m = 0; m < row.size(); ++m)
+      a_col_idx_[b + m] = row[m].first, a_from_[b + m] = row[m].second;
+    a_row_ptr_[r + 1] = b + row.size();
+  }
+  a_values_.assign(a_nnz, 0.0);
+  RCP<Graph> graph = rcp(new Graph(solve_map_, col_map, a_row_ptr_, a_col_idx_));
+  graph->expertStaticFillComplete(solve_map_, solve_map_);
+  A_ = rcp(new Matrix(RCP<const Graph>(graph)));
+}
+
+/// The CSR values from the contributions (summed per slot in contribution order) into S = A, or
+/// sent to the ranks that solve the rows (Export with ADD into zeros: each row comes from one
+/// rank) and placed in A.
 void TpetraSystem::fill_values(const RowContributions& rows) {
   std::fill(values_.begin(), values_.end(), 0.0);
   for (std::size_t c = 0; c < pos_.size(); ++c) values_[pos_[c]] += rows.val[c];
-  if (S_->isFillComplete()) S_->resumeFill();
-  for (std::size_t r = 0; r < rows.cells.size(); ++r) {
-    const std::size_t b = row_ptr_[r], n = row_ptr_[r + 1] - b;
-    S_->replaceLocalValues(static_cast<LO>(r), col_idx_.view(b, n),
-                           Teuchos::ArrayView<const double>(values_.data() + b, n));
+  const Teuchos::ArrayRCP<std::size_t>& ptr = export_.is_null() ? row_ptr_ : a_row_ptr_;
+  const Teuchos::ArrayRCP<LO>& idx = export_.is_null() ? col_idx_ : a_col_idx_;
+  const double* vals = values_.data();
+  if (!export_.is_null()) {
+    {
+      auto v = nnz_src_->getDataNonConst();
+      std::copy(values_.begin(), values_.end(), v.begin());
+    }
+    nnz_dst_->putScalar(0.0);
+    nnz_dst_->doExport(*nnz_src_, *nnz_export_, Tpetra::ADD);
+    const auto got = nnz_dst_->getData();
+    for (std::size_t j = 0; j < a_values_.size(); ++j) a_values_[j] = got[a_from_[j]];
+    vals = a_values_.data();
   }
-  S_->fillComplete(asm_map_, asm_map_);
-  if (export_.is_null()) return;
-  // Rows assembled here but solved elsewhere: Export with ADD (each row of A comes from one rank).
   if (A_->isFillComplete()) A_->resumeFill();
-  A_->setAllToScalar(0.0);
-  A_->doExport(*S_, *export_, Tpetra::ADD);
+  for (std::size_t r = 0; r + 1 < static_cast<std::size_t>(ptr.size()); ++r) {
+    const std::size_t b = ptr[r], n = ptr[r + 1] - b;
+    A_->replaceLocalValues(static_cast<LO>(r), idx.view(b, n),
+                           Teuchos::ArrayView<const double>(vals + b, n));
+  }
   A_->fillComplete(solve_map_, solve_map_);
 }
 

@@ -3,19 +3,21 @@
 // by tpetra_system.cpp and pressure_solver.cpp).
 //
 // Every rank assembles the rows of its owned fluid cells, numbered contiguously over the ranks
-// (rank offset + local index), into a CrsMatrix S on that "assembly" map, built from local CSR
-// arrays with a prepared column map (own columns, then the others sorted) and
-// expertStaticFillComplete. With solver/rebalance on several ranks the rows are solved on an even
-// split of the same numbering (the "solve" map): the rows a rank assembled but does not own there
-// are sent with one Export and ADD into the matrix A on the solve map (the rows it keeps are
-// copied locally by the same Export); otherwise A is S. Maps, graphs, the Export, the column
-// positions of every contribution and the vectors are kept while the structure (rows and the
-// columns of every contribution, on every rank) is unchanged: a solve then only refills values.
+// (rank offset + local index), as local CSR arrays (the "assembly" map). Without rebalancing
+// they are the CrsMatrix A, built with a prepared column map (own columns, then the others
+// sorted) and expertStaticFillComplete. With solver/rebalance on several ranks the rows are
+// solved on an even split of the same numbering (the "solve" map): the rows a rank assembled but
+// does not own there are sent with Exports (ADD) to the rank that solves them (the rows it keeps
+// are copied locally by the same Exports), and A is built there from local CSR arrays the same
+// way. Maps, graphs, Exports, the CSR slot of every contribution and the vectors are kept while
+// the structure (rows and the columns of every contribution, on every rank) is unchanged: a
+// solve then only refills values.
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Export.hpp>
 #include <Tpetra_Map.hpp>
 #include <Tpetra_MultiVector.hpp>
+#include <Tpetra_Vector.hpp>
 
 #include <vector>
 
@@ -50,8 +52,10 @@ class TpetraSystem {
   bool same_structure(const RowContributions& rows, const core::Comm& comm, bool rebalance) const;
   void rebuild(const RowContributions& rows, const grid::Decomposition& d, bool rebalance);
   std::vector<GO> column_gids(const RowContributions& rows, const grid::Decomposition& d) const;
-  void build_source(const RowContributions& rows, const std::vector<GO>& col_gid);
+  void build_source(const RowContributions& rows, const std::vector<GO>& col_gid, bool make_matrix);
   void build_solve_side(const RowContributions& rows, const grid::Decomposition& d, bool rebalance);
+  void build_moved_rows(const std::vector<std::size_t>& counts, const core::Comm& comm,
+                        long long lo, long long hi);
   void fill_values(const RowContributions& rows);
   void fill_vectors(const RowContributions& rows, const std::vector<double>& x0);
 
@@ -65,8 +69,16 @@ class TpetraSystem {
   Teuchos::RCP<Tpetra::Export<>> export_;
   Teuchos::ArrayRCP<std::size_t> row_ptr_;
   Teuchos::ArrayRCP<LO> col_idx_;
-  std::vector<std::size_t> pos_;  // per contribution: its slot in the CSR values of S
-  std::vector<double> values_;    // CSR values of S
+  std::vector<std::size_t> pos_;  // per contribution: its slot in the assembled CSR values
+  std::vector<double> values_;    // assembled CSR values
+  std::vector<GO> s_col_gids_;    // the assembled CSR's columns (local index -> number)
+  // Rebalanced: the nonzeros moved by one Export, and A's CSR filled from what arrives.
+  Teuchos::RCP<Tpetra::Vector<>> nnz_src_, nnz_dst_;
+  Teuchos::RCP<Tpetra::Export<>> nnz_export_;
+  Teuchos::ArrayRCP<std::size_t> a_row_ptr_;
+  Teuchos::ArrayRCP<LO> a_col_idx_;
+  std::vector<std::size_t> a_from_;
+  std::vector<double> a_values_;
   Teuchos::RCP<MV> X_, B_, coords_, X_asm_, B_asm_;
 };
 
