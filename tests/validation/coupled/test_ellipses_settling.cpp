@@ -9,6 +9,8 @@
 
 #include "case_loader.hpp"
 #include "picdem/coupling/simulation.hpp"
+#include "picdem/dem/dem_solver.hpp"
+#include "picdem/fluid/fluid_state.hpp"
 
 using namespace picdem;
 
@@ -47,16 +49,16 @@ TEST(EllipsesSettling, HeavyOnesComeToRestAndTheLightOneFloatsHalfSubmerged) {
     const auto& d = sim.diagnostics();
     if (volume0 < 0) volume0 = d.fluid_volume;
     worst_volume = std::max(worst_volume, std::abs(d.fluid_volume - volume0) / volume0);
-    worst_overlap = std::max(worst_overlap, sim.max_contact_overlap() / gap);
-    if (late.empty() && sim.time() >= t_end - 0.25) late = sim.solids();
+    worst_overlap = std::max(worst_overlap, sim.dem()->max_contact_overlap() / gap);
+    if (late.empty() && sim.time() >= t_end - 0.25) late = sim.dem()->gather_all();
     if (sim.time() < 0.5 * t_end) continue;
     // the still-water level: the mean surface height every centimetre away from the floater
-    const auto f = sim.solids().at(floater);
+    const auto f = sim.dem()->gather_all().at(floater);
     double level = 0.0;
     int probes = 0;
     for (double x = 0.005; x < length; x += 0.01) {
       if (std::abs(x - f.x.x) < fa + 2 * h) continue;
-      const double z = sim.surface_height(x);
+      const double z = sim.fluid().surface_height(x);
       if (std::isfinite(z)) level += z, ++probes;
     }
     level /= probes;
@@ -64,7 +66,7 @@ TEST(EllipsesSettling, HeavyOnesComeToRestAndTheLightOneFloatsHalfSubmerged) {
     ++n;
   }
   const double half = 0.5 * M_PI * fa * fb;  // (rho_s / rho_f) pi a b
-  const auto end = sim.solids();
+  const auto end = sim.dem()->gather_all();
   if (comm.is_root()) {
     std::printf(
         "ellipses settling: floater's mean submerged area / expected = %.4f over the second "
