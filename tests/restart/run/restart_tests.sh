@@ -204,7 +204,8 @@ blow_up)
     --set checkpoint/directory="$W/A/checkpoints"
   expect_ok $? "$W/B"
   echo "blown up at step $step, last good checkpoint of step $last loads"
-  # Two disks whose real boundaries overlap: stopped at the first step, naming both solids.
+  # Two disks whose real boundaries overlap: refused before the first step (input checks, exit
+  # code 2), naming both solids and the overlap.
   cat > "$W/overlap.yaml" << 'EOF'
 grid: {length: 0.1, height: 0.1, cell_size: 0.002}
 solids:
@@ -215,9 +216,10 @@ output: {png: false}
 EOF
   run 1 "$W/C" "$W/overlap.yaml" --max-steps 5
   code=$?
-  [ $code -eq 3 ] || fail "overlap: exit code $code, expected 3: $(tail -3 "$W/C.log")"
-  grep -q "the run stopped: step 1 at t = .*solid 0 lies inside solid 1" "$W/C.log" ||
+  [ $code -eq 2 ] || fail "overlap: exit code $code, expected 2: $(tail -3 "$W/C.log")"
+  grep -q "solids/a (id 0) and solids/b (id 1) overlap by 0.01 m" "$W/C.log" ||
     fail "no overlap diagnostic: $(tail -3 "$W/C.log")"
+  [ -d "$W/C/checkpoints" ] && [ -n "$(ls "$W/C/checkpoints")" ] && fail "overlap: a step was run"
   ;;
 schedule)
   # every_seconds (tiny: after every step) with keep = 3 leaves exactly the newest three; a fresh
