@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The main job: installs what is missing, builds, and runs the fall pipe (continuous) on 2 ranks at
-# a reduced resolution (h = 1.5 mm, the first 1.0 s of dumping; about four minutes on 2 cores), then plots
+# a reduced resolution (h = 1.5 mm, the first 1.0 s of dumping; about two minutes on 2 cores after the build), then plots
 # the water levels and the cylinders leaving the pipe, and joins the pictures into a movie
 # (pictures/movie.mp4 with ffmpeg, movie.gif without). Prints where everything is.
 # Extra arguments go to picdem (e.g. --set time/end=2.0, or --restart latest to continue).
