@@ -16,7 +16,9 @@ void declare_parameters(core::ParamSchema& s) {
   s.string("case/name", "unnamed", {}, "short name, used in output file headers");
 
   s.section("time", "Simulated time and the adaptive time step.");
-  s.real("time/end", 1.0, "simulated time to reach [s]").positive().is_required();
+  s.real("time/end", 1.0,
+         "simulated time to reach [s]; the run ends with the first step at or past it (the last "
+         "step is not shortened, so continuing to a later end follows the same trajectory)").positive().is_required();
   s.real("time/cfl", 0.5, "CFL number: dt <= cfl h / max|u| on the grid").positive().at_most(5.0);
   s.real("time/dt_max", 1e-3, "largest time step [s]").positive();
   s.real("time/dt_min", 1e-8, "smallest time step [s]; a step below it stops the run as blown up")

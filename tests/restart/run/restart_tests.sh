@@ -2,7 +2,7 @@
 # Restart tests of the picdem executable (doc/restart.md). Each test runs in its own folder.
 # usage: restart_tests.sh PICDEM SOURCE_DIR WORK_DIR PYTHON TEST [TEST ARGS] -- MPIEXEC...
 #   TEST: bitwise N CASE | ranks N M | kill_during_write | sigterm | sigusr1 | bad_files | blow_up
-#         | schedule | layout
+#         | schedule | layout | extend
 set -u
 picdem=$1 src=$2 work=$3 python=$4 test=$5
 shift 5
@@ -220,6 +220,27 @@ EOF
   grep -q "solids/a (id 0) and solids/b (id 1) overlap by 0.01 m" "$W/C.log" ||
     fail "no overlap diagnostic: $(tail -3 "$W/C.log")"
   [ -d "$W/C/checkpoints" ] && [ -n "$(ls "$W/C/checkpoints")" ] && fail "overlap: a step was run"
+  ;;
+extend)
+  # A run to t = 0.05 s continued with --set time/end=0.1 takes the steps of one run made to
+  # 0.1 s: the end checkpoints are bitwise equal and so is timeseries.csv. (Before, the step that
+  # landed exactly on the first end time was shortened and the two runs parted there.)
+  read -r -a c <<< "$(case_args floating_disk)"
+  quiet=(--set output/progress_seconds=0 --set checkpoint/at_end=true --set checkpoint/keep=5)
+  "$picdem" "${c[@]}" "${quiet[@]}" --set time/end=0.1 -o "$W/A" > "$W/A.log" 2>&1 ||
+    fail "run to 0.1 s failed"
+  "$picdem" "${c[@]}" "${quiet[@]}" --set time/end=0.05 -o "$W/B" > "$W/B.log" 2>&1 ||
+    fail "run to 0.05 s failed"
+  first=$(ls "$W/B/checkpoints" | tail -1)
+  "$picdem" "${c[@]}" "${quiet[@]}" --set time/end=0.1 --restart latest -o "$W/B" \
+    > "$W/B2.log" 2>&1 || fail "continued run failed: $(tail -3 "$W/B2.log")"
+  grep -q "restarted from .*$first" "$W/B2.log" || fail "did not continue from $first"
+  end_a=$(ls "$W/A/checkpoints" | tail -1) end_b=$(ls "$W/B/checkpoints" | tail -1)
+  [ "$end_a" = "$end_b" ] || fail "runs ended at different steps: $end_a vs $end_b"
+  $cmp "$W/A/checkpoints/$end_a" "$W/B/checkpoints/$end_b" bitwise ||
+    fail "continued run differs from the run made to the later end"
+  cmp "$W/A/timeseries.csv" "$W/B/timeseries.csv" || fail "timeseries.csv differs"
+  echo "run to 0.05 s continued to 0.1 s: $end_b bitwise equal to the run made to 0.1 s"
   ;;
 schedule)
   # every_seconds (tiny: after every step) with keep = 3 leaves exactly the newest three; a fresh
