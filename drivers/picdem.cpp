@@ -27,6 +27,7 @@ const char* usage =
     "                        [--restart PATH|latest]\n"
     "       picdem --check CASE.yaml [--set KEY=VALUE ...]\n"
     "       picdem --help-parameters\n"
+    "CASE.yaml may also be a directory holding case.yaml (cases/dam_break).\n"
     "Run under mpirun for more ranks. KEY is a case-file path such as grid/cell_size.\n"
     "--restart continues from a checkpoint file, or from the newest one in the checkpoint\n"
     "directory (latest); SIGTERM or SIGUSR1 makes the run write a checkpoint and exit 0.\n";
@@ -147,7 +148,7 @@ int main(int argc, char** argv) {
   RunParts run(comm, argc, argv);
   double memory_estimate = 0.0;
   try {
-    const Args args = parse(argc, argv);
+    Args args = parse(argc, argv);
     if (args.help) {
       picdem::core::log(comm, usage);
       return 0;
@@ -163,6 +164,7 @@ int main(int argc, char** argv) {
     }
     if (args.case_file.empty())
       throw picdem::core::InputError(std::string("no case file\n") + usage);
+    args.case_file = picdem::core::case_file_path(comm, args.case_file);  // DIR: DIR/case.yaml
     const auto params = picdem::core::read_case(comm, args.case_file, args.overrides, schema);
     picdem::driver::check_case(comm, params);  // placement, solver lists, memory (doc/cases.md)
     memory_estimate = picdem::driver::memory_estimate_bytes(params, comm.size());

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <regex>
@@ -738,8 +739,27 @@ Params read_case_text(const std::string& text, const std::string& source,
   return schema.resolve(*list, overrides.empty() ? source : source + " (with --set overrides)");
 }
 
-Params read_case(const Comm& comm, const std::string& file,
+std::string case_file_path(const Comm& comm, const std::string& path) {
+  std::string file = path, problem;
+  if (comm.is_root()) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) {
+      file = (std::filesystem::path(path) / "case.yaml").string();
+      if (!std::filesystem::is_regular_file(file, ec))
+        problem = path +
+                  ": a directory, not a case file, and it holds no case.yaml; give the "
+                  "case file (e.g. cases/dam_break/case.yaml) or a directory holding "
+                  "case.yaml";
+    }
+  }
+  problem = comm.broadcast(problem);
+  if (!problem.empty()) throw InputError(problem);
+  return comm.broadcast(file);
+}
+
+Params read_case(const Comm& comm, const std::string& path,
                  const std::vector<std::string>& overrides, const ParamSchema& schema) {
+  const std::string file = case_file_path(comm, path);
   std::string text, problem;
   if (comm.is_root()) {
     std::ifstream in(file, std::ios::binary);

@@ -52,6 +52,8 @@ check bad_override "key 'fluid/density' = -1 is not allowed: must be > 0" \
   "$@" -n "$ranks" "$picdem" --check "$dir/../good_case.yaml" --set fluid/density=-1
 check unknown_override "unknown key 'grid/cellsize'" \
   "$@" -n "$ranks" "$picdem" --check "$dir/../good_case.yaml" --set grid/cellsize=0.1
+check directory_without_case "a directory, not a case file, and it holds no case.yaml" \
+  "$@" -n "$ranks" "$picdem" --check "$dir"
 check unknown_option "unknown option --frobnicate" "$@" -n "$ranks" "$picdem" --frobnicate
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

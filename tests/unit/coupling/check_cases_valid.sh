@@ -8,6 +8,12 @@ for f in "$src"/cases/*/case*.yaml "$src"/tests/unit/coupling/good_case.yaml; do
   if out=$("$picdem" --check "$f" 2>&1); then passed=$((passed + 1)); else
     echo "FAIL $f: $out"; failed=$((failed + 1)); fi
 done
+# A case directory stands for its case.yaml, and the run says which file it read.
+if out=$("$picdem" --check "$src/cases/dam_break" 2>&1) && grep -qF "cases/dam_break/case.yaml: valid" <<< "$out"; then
+  passed=$((passed + 1))
+else
+  echo "FAIL picdem --check cases/dam_break (a directory): $out"; failed=$((failed + 1))
+fi
 if diff -u "$src/doc/parameters.md" <("$picdem" --help-parameters) > /tmp/picdem_param_diff.$$ 2>&1; then
   passed=$((passed + 1))
 else

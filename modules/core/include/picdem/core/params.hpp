@@ -145,8 +145,14 @@ std::shared_ptr<Teuchos::ParameterList> parse_yaml(const std::string& text,
 /// Applies one "--set path=value" override (value parsed as YAML) to `list`.
 void apply_override(Teuchos::ParameterList& list, const std::string& assignment);
 
-/// Reads `file` on rank 0, broadcasts it, parses it, applies the overrides and validates against
-/// `schema` on every rank. Every rank throws the same InputError on bad input.
+/// The case file a path names: the path itself, or DIR/case.yaml when the path is a directory
+/// holding one (cases/NAME/ as well as cases/NAME/case.yaml). Decided on rank 0 and broadcast;
+/// a directory without case.yaml throws InputError (on every rank) saying so.
+std::string case_file_path(const Comm& comm, const std::string& path);
+
+/// Reads `file` (or the case.yaml of a directory: case_file_path) on rank 0, broadcasts it, parses
+/// it, applies the overrides and validates against `schema` on every rank. Every rank throws the
+/// same InputError on bad input.
 Params read_case(const Comm& comm, const std::string& file,
                  const std::vector<std::string>& overrides, const ParamSchema& schema);
 
