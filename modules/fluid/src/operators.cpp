@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "picdem/core/error.hpp"
 #include "picdem/core/timer.hpp"
@@ -312,35 +314,100 @@ void fluid_faces(const CellStates& cells, const Apertures& E, grid::GridArray<si
 }
 
 namespace {
-void extend_one(FaceField& f, grid::GridArray<signed char>& valid, int layers,
-                const grid::Halo& halo) {
-  halo.forward(valid);
-  halo.forward(f);
-  const auto& b = f.owned();
-  std::vector<std::pair<std::size_t, double>> updates;
-  for (int layer = 0; layer < layers; ++layer) {
-    updates.clear();
-    for (int k = b.k0; k < b.k1; ++k)
-      for (int i = b.i0; i < b.i1; ++i) {
-        if (valid(i, k)) continue;
-        double sum = 0.0;
-        int n = 0;
-        const int di[4] = {1, -1, 0, 0}, dk[4] = {0, 0, 1, -1};
-        for (int m = 0; m < 4; ++m) {
-          const int a = i + di[m], c = k + dk[m];
-          if (f.in_storage(a, c) && valid(a, c)) sum += f(a, c), ++n;
+
+// Off-grid storage faces (beyond the walls) are never extended; their validity is tagged in bit
+// 1 of the working copy so that one forward tells them from on-grid halo faces (whose owners
+// overwrite the tag). Bit 0 is "valid"; bit 2 marks a face queued for the current layer.
+constexpr signed char kValid = 1, kOffGrid = 2, kQueued = 4;
+
+/// The width of the halo around the owned samples (the smallest over the four sides).
+int halo_width(const FaceField& f) {
+  const auto& o = f.owned();
+  const auto& s = f.storage();
+  return std::min({o.i0 - s.i0, s.i1 - o.i1, o.k0 - s.k0, s.k1 - o.k1});
+}
+
+/// `rounds` layers of extension computed locally on the storage box: layer l on the box shrunk by
+/// l, where every value it reads is that of the layer-by-layer scheme with a forward after each
+/// layer (the neighbours lie in the box shrunk by l - 1). The owned faces are exact when
+/// rounds <= halo width. Only faces next to a face made valid by the previous layer can change,
+/// so every layer after the first visits that band only.
+void extend_locally(FaceField& f, grid::GridArray<signed char>& v, int rounds,
+                    std::vector<std::size_t>& band,
+                    std::vector<std::pair<std::size_t, double>>& updates) {
+  const core::IndexBox s = f.storage();
+  const auto row = static_cast<std::ptrdiff_t>(s.nx());
+  const std::ptrdiff_t step[4] = {1, -1, row, -row};  // (i+1), (i-1), (k+1), (k-1)
+  double* x = f.data().data();
+  signed char* m = v.data().data();
+  // first layer: every invalid on-grid face of the box shrunk by 1 with a valid neighbour
+  band.clear();
+  for (int k = s.k0 + 1; k < s.k1 - 1; ++k)
+    for (int i = s.i0 + 1; i < s.i1 - 1; ++i) {
+      const std::size_t n = f.index(i, k);
+      if (m[n] != 0) continue;
+      for (std::ptrdiff_t d : step)
+        if (m[static_cast<std::ptrdiff_t>(n) + d] & kValid) {
+          band.push_back(n);
+          break;
         }
-        // u_f = mean of the valid neighbours (one layer of extension)
-        if (n > 0) updates.emplace_back(f.index(i, k), sum / n);
-      }
-    for (const auto& [idx, v] : updates) {
-      f.data()[idx] = v;
-      valid.data()[idx] = 1;
     }
-    halo.forward(valid);
-    halo.forward(f);
+  for (int layer = 1; layer <= rounds; ++layer) {
+    updates.clear();
+    for (std::size_t n : band) {
+      double sum = 0.0;
+      int count = 0;
+      for (std::ptrdiff_t d : step) {
+        const auto a = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(n) + d);
+        if (m[a] & kValid) sum += x[a], ++count;
+      }
+      // u_f = mean of the valid neighbours (one layer of extension)
+      if (count > 0) updates.emplace_back(n, sum / count);
+    }
+    for (const auto& [n, value] : updates) x[n] = value, m[n] = kValid;
+    if (layer == rounds) break;
+    // next band: invalid on-grid neighbours of the faces just made valid, inside the box shrunk
+    // by layer + 1
+    band.clear();
+    const core::IndexBox next{s.i0 + layer + 1, s.i1 - layer - 1, s.k0 + layer + 1,
+                              s.k1 - layer - 1};
+    for (const auto& [n, value] : updates) {
+      const auto i = s.i0 + static_cast<int>(n % static_cast<std::size_t>(row));
+      const auto k = s.k0 + static_cast<int>(n / static_cast<std::size_t>(row));
+      const int di[4] = {1, -1, 0, 0}, dk[4] = {0, 0, 1, -1};
+      for (int q = 0; q < 4; ++q) {
+        const auto a = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(n) + step[q]);
+        if (m[a] != 0 || !next.contains(i + di[q], k + dk[q])) continue;
+        m[a] = kQueued;
+        band.push_back(a);
+      }
+    }
+    for (std::size_t n : band) m[n] = 0;
   }
 }
+
+void extend_one(FaceField& f, grid::GridArray<signed char>& v, int layers, const grid::Halo& halo) {
+  if (layers <= 0) return;
+  const int width = halo_width(f);
+  if (width < 1)
+    throw core::SolverError("extend_velocity: the fields need a halo of at least one face");
+  const core::IndexBox o = f.owned(), s = f.storage();
+  for (int k = s.k0; k < s.k1; ++k)
+    for (int i = s.i0; i < s.i1; ++i)
+      if (!o.contains(i, k)) v(i, k) = static_cast<signed char>((v(i, k) ? kValid : 0) | kOffGrid);
+  halo.forward(v);  // the owners' flags replace the tag on every on-grid halo face
+  halo.forward(f);
+  std::vector<std::size_t> band;
+  std::vector<std::pair<std::size_t, double>> updates;
+  for (int done = 0; done < layers;) {
+    const int rounds = std::min(width, layers - done);
+    extend_locally(f, v, rounds, band, updates);
+    done += rounds;
+    halo.forward(f);
+    if (done < layers) halo.forward(v);
+  }
+}
+
 }  // namespace
 
 void extend_velocity(FaceField& u, FaceField& w, const grid::GridArray<signed char>& u_valid,

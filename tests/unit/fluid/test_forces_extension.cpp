@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "fluid_test_support.hpp"
 #include "picdem/core/error.hpp"
@@ -117,6 +119,81 @@ TEST(FluidExtension, FillsAirFacesLayerByLayer) {
       if (i == 0 || i == s.nx) continue;  // wall faces: reset by enforce_walls afterwards
       EXPECT_EQ(u(i, k), k <= 2 + layers ? 1.0 + i : 0.0) << i << "," << k;
     }
+}
+
+namespace {
+
+/// The extension as first written: owned faces only, a forward after every layer.
+void extend_layer_by_layer(FaceField& f, GridArray<signed char> valid, int layers,
+                           const Halo& halo) {
+  halo.forward(valid);
+  halo.forward(f);
+  const auto& b = f.owned();
+  for (int layer = 0; layer < layers; ++layer) {
+    std::vector<std::pair<std::size_t, double>> updates;
+    for (int k = b.k0; k < b.k1; ++k)
+      for (int i = b.i0; i < b.i1; ++i) {
+        if (valid(i, k)) continue;
+        double sum = 0.0;
+        int n = 0;
+        const int di[4] = {1, -1, 0, 0}, dk[4] = {0, 0, 1, -1};
+        for (int m = 0; m < 4; ++m)
+          if (f.in_storage(i + di[m], k + dk[m]) && valid(i + di[m], k + dk[m]))
+            sum += f(i + di[m], k + dk[m]), ++n;
+        if (n > 0) updates.emplace_back(f.index(i, k), sum / n);
+      }
+    for (const auto& [idx, v] : updates) f.data()[idx] = v, valid.data()[idx] = 1;
+    halo.forward(valid);
+    halo.forward(f);
+  }
+}
+
+/// A pseudo-random number in [0, 1) of the sample (i, k) and a salt, the same on every rank.
+double noise(int i, int k, unsigned salt) {
+  unsigned long long x = (static_cast<unsigned long long>(i + 100) * 1000003ULL) ^
+                         (static_cast<unsigned long long>(k + 100) * 998244353ULL) ^ salt;
+  x ^= x >> 33, x *= 0xff51afd7ed558ccdULL, x ^= x >> 33, x *= 0xc4ceb9fe1a85ec53ULL;
+  x ^= x >> 33;
+  return static_cast<double>(x >> 11) * 0x1.0p-53;
+}
+
+}  // namespace
+
+// The band-limited extension with one forward per halo width gives the values of the
+// layer-by-layer scheme bit for bit, owned and halo faces alike, for islands of valid faces,
+// valid faces beyond the walls, halos of 1 to 3 and more layers than the halo is wide.
+TEST(FluidExtension, MatchesLayerByLayerBitwise) {
+  core::Comm comm;
+  const GridSpec s = make_spec(23, 17, 0.1);
+  for (int halo_width : {1, 2, 3})
+    for (int layers : {1, 3, 5})
+      for (double density : {0.03, 0.3}) {
+        Decomposition d(s, comm, halo_width);
+        Halo halo(d);
+        for (Stagger st : {Stagger::FaceX, Stagger::FaceZ}) {
+          FaceField f(d, st, 0.0);
+          GridArray<signed char> valid(d, st, 0);
+          const auto b = f.storage();
+          for (int k = b.k0; k < b.k1; ++k)
+            for (int i = b.i0; i < b.i1; ++i) {
+              valid(i, k) = noise(i, k, 7) < density ? 1 : 0;
+              f(i, k) = valid(i, k) ? noise(i, k, 11) - 0.5 : 0.0;
+            }
+          FaceField expect = f;
+          extend_layer_by_layer(expect, valid, layers, halo);
+          FaceField got = f, other(d, st == Stagger::FaceX ? Stagger::FaceZ : Stagger::FaceX);
+          GridArray<signed char> other_valid(d, other.stagger(), 0);
+          if (st == Stagger::FaceX)
+            fluid::extend_velocity(got, other, valid, other_valid, layers, halo);
+          else
+            fluid::extend_velocity(other, got, other_valid, valid, layers, halo);
+          for (int k = b.k0; k < b.k1; ++k)
+            for (int i = b.i0; i < b.i1; ++i)
+              ASSERT_EQ(got(i, k), expect(i, k))
+                  << "halo " << halo_width << ", layers " << layers << ", density " << density
+                  << ", stagger " << static_cast<int>(st) << ", face " << i << "," << k;
+        }
+      }
 }
 
 TEST(FluidTimeStep, CflOverAllRanks) {

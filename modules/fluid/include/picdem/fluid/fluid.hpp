@@ -99,7 +99,9 @@ void fluid_faces(const CellStates& cells, const Apertures& E, grid::GridArray<si
 
 /// Extends velocities from valid faces into invalid ones, `layers` deep: each layer gives every
 /// invalid face with valid neighbours (same component, 4-neighbourhood) their mean and marks it
-/// valid. The validity arrays are copied, not changed; halo forwarded after every layer.
+/// valid. The validity arrays are copied, not changed. The result is that of forwarding the halo
+/// after every layer, bit for bit; computed with one forward per halo width of layers, and after
+/// the first layer only on the band next to the faces the previous layer reached.
 void extend_velocity(grid::FaceField& u, grid::FaceField& w,
                      const grid::GridArray<signed char>& u_valid,
                      const grid::GridArray<signed char>& w_valid, int layers,
