@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace picdem::coupling {
 
@@ -49,9 +50,26 @@ void open_share_correction(grid::CellField& S, const geometry::CutCells& cut,
   const auto b = S.storage();
   const auto ext = d.spec().extent(grid::Stagger::Cell);
   const double tent[3] = {0.125, 0.75, 0.125};  // the tent's mass in the cell and either neighbour
-  grid::CellField out = S;
+  // Where the cell and its neighbours are all fluid, open = all exactly and S is unchanged: only
+  // cells next to a cut or covered cell are visited. S(i, k) is the only value of S read for
+  // cell (i, k), so S is corrected in place.
+  const auto nx = static_cast<std::size_t>(b.nx());
+  std::vector<unsigned char> near(static_cast<std::size_t>(b.size()), 0);
+  const auto& st = cut.store;  // the cut cells' storage: their window grown by one cell
   for (int k = b.k0; k < b.k1; ++k)
     for (int i = b.i0; i < b.i1; ++i) {
+      if (cut.fraction[static_cast<std::size_t>(k - st.k0) * static_cast<std::size_t>(st.nx()) +
+                       static_cast<std::size_t>(i - st.i0)] == 1.0)
+        continue;
+      for (int kk = std::max(k - 1, b.k0); kk < std::min(k + 2, b.k1); ++kk)
+        for (int ii = std::max(i - 1, b.i0); ii < std::min(i + 2, b.i1); ++ii)
+          near[static_cast<std::size_t>(kk - b.k0) * nx + static_cast<std::size_t>(ii - b.i0)] = 1;
+    }
+  for (int k = b.k0; k < b.k1; ++k)
+    for (int i = b.i0; i < b.i1; ++i) {
+      if (!near[static_cast<std::size_t>(k - b.k0) * nx + static_cast<std::size_t>(i - b.i0)] ||
+          S(i, k) == 0.0)
+        continue;
       double open = 0.0, all = 0.0;
       for (int bb = -1; bb <= 1; ++bb)
         for (int aa = -1; aa <= 1; ++aa) {
@@ -60,13 +78,12 @@ void open_share_correction(grid::CellField& S, const geometry::CutCells& cut,
           open += wgt * cut.fluid_fraction(i + aa, k + bb);
           all += wgt;
         }
-      if (open > 0.05 * all) out(i, k) = S(i, k) * all / open;
+      if (open > 0.05 * all) S(i, k) = S(i, k) * all / open;
     }
-  S = std::move(out);
 }
 
-double occupied_area(const grid::CellField& S, const grid::Decomposition& d,
-                     const core::Comm& comm, const geometry::CutCells* cut) {
+double occupied_area(const grid::CellField& S, const grid::Decomposition& d, const core::Comm& comm,
+                     const geometry::CutCells* cut) {
   const auto& spec = d.spec();
   const auto own = d.owned_cells();
   // S at a centre, mirrored across the tank walls.

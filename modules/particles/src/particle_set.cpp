@@ -1,6 +1,7 @@
 #include "picdem/particles/particle_set.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "picdem/core/error.hpp"
@@ -188,33 +189,40 @@ std::int64_t first_reseed_id(const grid::GridSpec& spec, const ParticleConfig& c
 void sort_by_cell(ParticleSet& p, const grid::GridSpec& spec) {
   const std::size_t n = p.size();
   if (n < 2) return;
+  // the cell of GridSpec::cell_of (the same arithmetic), clamped to the grid
   std::vector<long long> key(n);
   for (std::size_t m = 0; m < n; ++m) {
-    int i, k;
-    spec.cell_of({p.x[m], p.z[m]}, i, k);
+    const int i = static_cast<int>(std::floor((p.x[m] - spec.origin.x) / spec.h));
+    const int k = static_cast<int>(std::floor((p.z[m] - spec.origin.z) / spec.h));
     key[m] = spec.cell_gid(std::clamp(i, 0, spec.nx - 1), std::clamp(k, 0, spec.nz - 1));
   }
+  const auto before = [&](std::size_t a, std::size_t b) {
+    return key[a] != key[b] ? key[a] < key[b] : p.id[a] < p.id[b];
+  };
+  bool sorted = true;
+  for (std::size_t m = 1; m < n && sorted; ++m) sorted = before(m - 1, m);
+  if (sorted) return;  // (cell, id) is unique: already the order of the set
   const auto [lo, hi] = std::minmax_element(key.begin(), key.end());
   const long long k0 = *lo, range = *hi - *lo + 1;
   std::vector<std::size_t> order(n);
   if (range > static_cast<long long>(8 * n + 1024)) {
     for (std::size_t m = 0; m < n; ++m) order[m] = m;
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return key[a] != key[b] ? key[a] < key[b] : p.id[a] < p.id[b];
-    });
+    std::sort(order.begin(), order.end(), before);
   } else {
-    // counting sort by cell, then by id inside each cell (a handful of particles)
+    // counting sort by cell, then by id inside each cell (a handful of particles: insertion)
     std::vector<std::size_t> start(static_cast<std::size_t>(range) + 1, 0);
     for (std::size_t m = 0; m < n; ++m) ++start[static_cast<std::size_t>(key[m] - k0) + 1];
     for (std::size_t c = 0; c < static_cast<std::size_t>(range); ++c) start[c + 1] += start[c];
     std::vector<std::size_t> fill(start.begin(), start.end() - 1);
     for (std::size_t m = 0; m < n; ++m) order[fill[static_cast<std::size_t>(key[m] - k0)]++] = m;
-    for (std::size_t c = 0; c < static_cast<std::size_t>(range); ++c) {
-      // (cell, id) is unique: the order does not depend on the order particles arrived in
-      const auto first = order.begin() + static_cast<std::ptrdiff_t>(start[c]);
-      const auto last = order.begin() + static_cast<std::ptrdiff_t>(start[c + 1]);
-      std::sort(first, last, [&](std::size_t a, std::size_t b) { return p.id[a] < p.id[b]; });
-    }
+    for (std::size_t c = 0; c < static_cast<std::size_t>(range); ++c)
+      for (std::size_t a = start[c] + 1; a < start[c + 1]; ++a) {
+        // (cell, id) is unique: the order does not depend on the order particles arrived in
+        const std::size_t v = order[a];
+        std::size_t b = a;
+        for (; b > start[c] && p.id[order[b - 1]] > p.id[v]; --b) order[b] = order[b - 1];
+        order[b] = v;
+      }
   }
   p.permute(order);
 }

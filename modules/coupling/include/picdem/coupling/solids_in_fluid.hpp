@@ -82,6 +82,7 @@ class SolidLocator {
   core::Vec2 lo_;
   int nx_ = 0, nz_ = 0;
   std::vector<std::vector<int>> buckets_;  // solid indices by bucket; obstacles after solids
+  std::vector<core::Box2> boxes_;          // bounding boxes, grown by a margin (a quick reject)
   std::vector<std::vector<core::Vec2>> obstacle_polys_;
 };
 
