@@ -1,6 +1,7 @@
 // Benchmark: the dam break at N x N cells (N = 128, 256, 512, 1024 by default), on however many
 // ranks it is started with. Prints time per step split by phase, pressure solver iterations and
-// setup/solve split, particles per second through the transfers, and peak memory per rank.
+// setup/solve split, particles per second through the transfers, the cost of every phase per
+// fluid cell and per particle per step, and peak memory per rank.
 //   mpirun -n 2 build/drivers/bench/dam_break/bench_dam_break [steps] [N ...]
 // With `coupled`: the 6-layer cylinder dam break (cases/dam_break_cylinders_6_layers) at cell
 // size h (0.5 mm, 20 cells per diameter, by default), and the same water without the cylinders,
@@ -15,6 +16,7 @@
 #include "picdem/core/timer.hpp"
 #include "picdem/coupling/schema.hpp"
 #include "picdem/coupling/simulation.hpp"
+#include "picdem/fluid/fluid_state.hpp"
 #include "picdem/fluid/pressure_solver.hpp"
 
 namespace {
@@ -26,6 +28,17 @@ double peak_rss_mb() {
   return 0.0;
 }
 
+// Fluid cells over all ranks' owned cells.
+double fluid_cells(const picdem::core::Comm& comm, const picdem::coupling::Simulation& sim) {
+  const auto& c = sim.fluid().cells;
+  const auto b = c.owned();
+  const auto fluid = static_cast<signed char>(picdem::grid::CellState::Fluid);
+  long long n = 0;
+  for (int k = b.k0; k < b.k1; ++k)
+    for (int i = b.i0; i < b.i1; ++i) n += c(i, k) == fluid;
+  return static_cast<double>(comm.sum(n));
+}
+
 // Runs to t0, then times `steps` steps and prints the figures under `label`.
 void measure(const picdem::core::Comm& comm, const std::string& label,
              const picdem::core::Params& params, int steps, double t0) {
@@ -33,13 +46,16 @@ void measure(const picdem::core::Comm& comm, const std::string& label,
   for (int s = 0; s < 5 || sim.time() < t0; ++s) sim.step();
   picdem::core::reset_timers();
   long long its = 0, reused = 0;
-  double simulated = 0.0;
+  double simulated = 0.0, cells = 0.0, particles_sum = 0.0;
   for (int s = 0; s < steps; ++s) {
     sim.step();
     its += sim.diagnostics().ppe_iterations;
     reused += sim.diagnostics().ppe_structure_reused ? 1 : 0;
     simulated += sim.diagnostics().dt;
+    cells += fluid_cells(comm, sim);
+    particles_sum += static_cast<double>(sim.diagnostics().particles);
   }
+  cells /= steps, particles_sum /= steps;
   const auto t = picdem::core::timer_totals();
   // The step's phases are the top-level timers; "fluid: ...", "particles: ...", "dem: ...",
   // "io: ..." are inside them.
@@ -59,9 +75,19 @@ void measure(const picdem::core::Comm& comm, const std::string& label,
         "%.3e s, %.1f wall s per simulated s, peak %.0f MB/rank\n",
         label.c_str(), particles, sim.time() - simulated, 1e3 * total / steps, double(its) / steps,
         simulated / steps, total / simulated, mem);
-    for (const auto& kv : t)
-      std::printf("  %s%-32s %9.2f ms/step  %5.1f%%\n", nested(kv.first) ? "  " : "",
-                  kv.first.c_str(), 1e3 * kv.second / steps, 100 * kv.second / total);
+    // Cost per unit of work: wall time of the phase per step over the fluid cells (all ranks)
+    // and over the particles (all ranks), means over the timed steps.
+    std::printf("  %.0f fluid cells, %.0f particles (means over the timed steps)\n", cells,
+                particles_sum);
+    std::printf("  %-46s %9s  %6s %14s %14s\n", "phase (rank 0's timers)", "ms/step", "share",
+                "us/fluid cell", "ns/particle");
+    for (const auto& kv : t) {
+      const double per_step = kv.second / steps;
+      std::printf("  %s%-44s %9.2f  %5.1f%% %14.3f %14.1f\n", nested(kv.first) ? "  " : "",
+                  kv.first.c_str(), 1e3 * per_step, 100 * kv.second / total,
+                  cells > 0 ? 1e6 * per_step / cells : 0.0,
+                  particles_sum > 0 ? 1e9 * per_step / particles_sum : 0.0);
+    }
     auto get = [&](const char* k) { return t.count(k) ? t.at(k) : 0.0; };
     // The pressure system's Tpetra structure (maps, graph, Export) is rebuilt when the fluid mask
     // or the coupled cells change, else only its values are refilled.
