@@ -93,9 +93,19 @@ double occupied_area(const grid::CellField& S, const grid::Decomposition& d, con
     return S(i, k);
   };
   constexpr int sub = 8;  // sub-samples per cell and direction in cells the surface crosses
+  // A cell adds area only when S > 1/2 somewhere in its 3 x 3 block: cells farther than one from
+  // the box of such cells (on the grid, within the storage) add nothing and are not visited.
+  const auto st = S.storage().intersect(spec.extent(grid::Stagger::Cell));
+  core::IndexBox wet{st.i1, st.i0, st.k1, st.k0};
+  for (int k = st.k0; k < st.k1; ++k)
+    for (int i = st.i0; i < st.i1; ++i)
+      if (S(i, k) > 0.5)
+        wet = {std::min(wet.i0, i), std::max(wet.i1, i + 1), std::min(wet.k0, k),
+               std::max(wet.k1, k + 1)};
+  const auto visit = own.intersect(wet.grown(1));
   double area_cells = 0.0;
-  for (int k = own.k0; k < own.k1; ++k)
-    for (int i = own.i0; i < own.i1; ++i) {
+  for (int k = visit.k0; k < visit.k1; ++k)
+    for (int i = visit.i0; i < visit.i1; ++i) {
       double lo = 1e300, hi = -1e300;
       for (int b = -1; b <= 1; ++b)
         for (int a = -1; a <= 1; ++a)

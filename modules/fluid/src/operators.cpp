@@ -122,9 +122,8 @@ void enforce_walls(FaceField& u, FaceField& w, const FluidConfig& cfg,
   const double t = cfg.no_slip ? -1.0 : 1.0;
   const auto& bu = u.storage();
   for (int k = bu.k0; k < bu.k1; ++k) {
-    for (int i = bu.i0; i < bu.i1; ++i) {
-      if (i == 0 || i == nx) u(i, k) = 0.0;
-    }
+    for (int i : {0, nx})
+      if (u.in_storage(i, k)) u(i, k) = 0.0;
     // Normal component odd about the x-walls: u(-j) = -u(j), u(nx + j) = -u(nx - j).
     for (int i = bu.i0; i < 0; ++i)
       if (u.in_storage(-i, k)) u(i, k) = -u(-i, k);
@@ -140,8 +139,8 @@ void enforce_walls(FaceField& u, FaceField& w, const FluidConfig& cfg,
   }
   const auto& bw = w.storage();
   for (int i = bw.i0; i < bw.i1; ++i) {
-    for (int k = bw.k0; k < bw.k1; ++k)
-      if (k == 0 || k == nz) w(i, k) = 0.0;
+    for (int k : {0, nz})
+      if (w.in_storage(i, k)) w(i, k) = 0.0;
     for (int k = bw.k0; k < 0; ++k)
       if (w.in_storage(i, -k)) w(i, k) = -w(i, -k);
     for (int k = nz + 1; k < bw.k1; ++k)
