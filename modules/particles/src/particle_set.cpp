@@ -1,11 +1,11 @@
 #include "picdem/particles/particle_set.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <sstream>
 
 #include "picdem/core/error.hpp"
 #include "picdem/core/rng.hpp"
+#include "stencil.hpp"
 
 namespace picdem::particles {
 
@@ -192,8 +192,8 @@ void sort_by_cell(ParticleSet& p, const grid::GridSpec& spec) {
   // the cell of GridSpec::cell_of (the same arithmetic), clamped to the grid
   std::vector<long long> key(n);
   for (std::size_t m = 0; m < n; ++m) {
-    const int i = static_cast<int>(std::floor((p.x[m] - spec.origin.x) / spec.h));
-    const int k = static_cast<int>(std::floor((p.z[m] - spec.origin.z) / spec.h));
+    int i, k;
+    detail::cell_of(spec, p.x[m], p.z[m], i, k);
     key[m] = spec.cell_gid(std::clamp(i, 0, spec.nx - 1), std::clamp(k, 0, spec.nz - 1));
   }
   const auto before = [&](std::size_t a, std::size_t b) {

@@ -6,6 +6,7 @@
 #include "picdem/core/timer.hpp"
 #include "picdem/particles/motion.hpp"
 #include "picdem/particles/transfer.hpp"
+#include "stencil.hpp"
 
 namespace picdem::particles {
 
@@ -47,7 +48,7 @@ void reseed(ParticleSet& p, const ParticleConfig& config, const grid::Decomposit
   std::vector<std::size_t> cell(p.size());
   for (std::size_t n = 0; n < p.size(); ++n) {
     int i, k;
-    s.cell_of({p.x[n], p.z[n]}, i, k);
+    detail::cell_of(s, p.x[n], p.z[n], i, k);
     i = std::clamp(i, 0, s.nx - 1);
     k = std::clamp(k, 0, s.nz - 1);
     if (!cells.contains(i, k)) {

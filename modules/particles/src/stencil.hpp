@@ -37,12 +37,26 @@ inline Axes axes(const grid::GridSpec& spec, grid::Stagger s) {
   return a;
 }
 
+/// floor(v) as an int without a call into libm (the build targets baseline x86-64, which has no
+/// rounding instruction): the same value as static_cast<int>(std::floor(v)) for every v in the
+/// range of int.
+inline int floor_int(double v) {
+  const int t = static_cast<int>(v);  // truncates towards zero
+  return t - (static_cast<double>(t) > v ? 1 : 0);
+}
+
+/// GridSpec::cell_of with the same arithmetic, inline.
+inline void cell_of(const grid::GridSpec& s, double x, double z, int& i, int& k) {
+  i = floor_int((x - s.origin.x) / s.h);
+  k = floor_int((z - s.origin.z) / s.h);
+}
+
 inline Stencil stencil(const Axes& a, core::Vec2 p) {
   // sample-index coordinates of p
   const double sx = p.x * a.inv_h - a.x0, sz = p.z * a.inv_h - a.z0;
   Stencil st;
-  st.i = std::clamp(static_cast<int>(std::floor(sx)), 0, a.ni - 2);
-  st.k = std::clamp(static_cast<int>(std::floor(sz)), 0, a.nk - 2);
+  st.i = std::clamp(floor_int(sx), 0, a.ni - 2);
+  st.k = std::clamp(floor_int(sz), 0, a.nk - 2);
   st.fx = sx - st.i;
   st.fz = sz - st.k;
   return st;

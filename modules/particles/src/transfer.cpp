@@ -106,7 +106,7 @@ void count_per_cell(const ParticleSet& p, const grid::GridSpec& s, const grid::H
   count.fill(0);
   for (std::size_t n = 0; n < p.size(); ++n) {
     int i, k;
-    s.cell_of({p.x[n], p.z[n]}, i, k);
+    detail::cell_of(s, p.x[n], p.z[n], i, k);
     i = std::clamp(i, 0, s.nx - 1);
     k = std::clamp(k, 0, s.nz - 1);
     if (!count.in_storage(i, k)) {
