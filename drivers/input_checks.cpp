@@ -139,8 +139,12 @@ the value and what is allowed, when:
 - water regions reach outside the tank or are empty;
 - `solver/Belos`, `solver/MueLu` (and the lists merged from `solver/MueLu_solids`,
   `solver/MueLu_one_level`) hold a key or a type that Trilinos' own validators reject, or a
-  `smoother: type` Ifpack2 does not provide (the smoother and coarse sublists' own keys are
-  checked by Ifpack2/Amesos2 when the first hierarchy is built);
+  `smoother: type` Ifpack2 does not provide; the keys of the sublists `smoother: params`,
+  `smoother: pre params`, `smoother: post params` and `coarse: params` are given, as MueLu would
+  give them, to the Ifpack2 smoother of that type built on a 4-row matrix (or, for a direct coarse
+  type, to MueLu's DirectSolver): a value or type it rejects is named with its key and Trilinos'
+  reason, and so is a key that a smoother which does not validate its keys (CHEBYSHEV) never reads
+  and would silently ignore. The `level N` sublists are not checked;
 - the estimated memory of a rank exceeds what it may use: `run/memory_limit_gb`, or, when 0,
   MemTotal of /proc/meminfo divided by the ranks on the node (the smallest over the ranks). The
   estimate is 80 MB per process + (200 B per cell + 700 B per cell of water at t = 0 + 100 B per

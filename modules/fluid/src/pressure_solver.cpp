@@ -20,6 +20,7 @@
 #include "picdem/core/error.hpp"
 #include "picdem/core/timer.hpp"
 #include "pressure_rows.hpp"
+#include "solver_sublists.hpp"
 #include "tpetra_system.hpp"
 
 namespace picdem::fluid {
@@ -74,8 +75,8 @@ Teuchos::ParameterList muelu_list(const SolverSettings& s, bool with_solids, lon
 }
 
 /// Trilinos' own lists of valid parameters check the case's lists before the first solve:
-/// Belos' valid parameters of PseudoBlockCG and MueLu's master list (top level; the smoother and
-/// coarse sublists are checked by Ifpack2/Amesos2 when the hierarchy is built).
+/// Belos' valid parameters of PseudoBlockCG, MueLu's master list (top level) and the smoother and
+/// coarse sublists by the Ifpack2 smoother or MueLu direct solver they configure.
 void validate(const SolverSettings& s) {
   const std::vector<std::pair<const char*, Teuchos::ParameterList>> lists = {
       {"solver/MueLu", merged(s.muelu, nullptr)},
@@ -100,6 +101,7 @@ void validate(const SolverSettings& s) {
                                top.get<std::string>(k) +
                                "' is not allowed: Ifpack2 provides no such smoother (e.g. "
                                "CHEBYSHEV, RELAXATION, ILUT, RILUK, SCHWARZ)");
+    detail::check_muelu_sublists(key, top);
   }
   try {
     Belos::PseudoBlockCGSolMgr<double, MV, OP> cg;

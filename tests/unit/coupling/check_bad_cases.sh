@@ -27,6 +27,7 @@ done
 # A real launch stops the same way, before anything runs.
 out_dir=$(mktemp -d)
 for name in disks_overlap disk_outside_tank disk_in_obstacle cell_size_absurd muelu_bad_smoother \
+  muelu_smoother_param_bad_value muelu_coarse_param_unknown \
   belos_wrong_type; do
   check "run_$name" "$(cat "$dir/$name.expect")" "$@" -n "$ranks" "$picdem" "$dir/$name.yaml" \
     --output "$out_dir/$name" --max-steps 1

@@ -1,0 +1,19 @@
+#pragma once
+// The keys inside MueLu's smoother and coarse-solver sublists, checked before the run by the
+// Trilinos objects they configure (MueLu hands them on only when the first hierarchy is built).
+#include <Teuchos_ParameterList.hpp>
+#include <string>
+
+namespace picdem::fluid::detail {
+
+/// Checks "smoother: params", "smoother: pre params", "smoother: post params" and
+/// "coarse: params" of the MueLu list `muelu` (as handed to MueLu; `key` names it in messages,
+/// e.g. solver/MueLu_solids) the way MueLu's ParameterListInterpreter builds them: an Ifpack2
+/// smoother (every "smoother" type, and a coarse type MueLu builds as a smoother) is created on a
+/// 4-row matrix and given the sublist (Ifpack2 rejects a wrong value or type; a key that it does
+/// not read, which Ifpack2 would silently ignore, is rejected here); any other coarse type is
+/// MueLu's DirectSolver, constructed with the sublist (it validates the keys). Throws
+/// core::InputError "key 'KEY/SUBLIST/NAME' = VALUE is not allowed: WHY".
+void check_muelu_sublists(const std::string& key, const Teuchos::ParameterList& muelu);
+
+}  // namespace picdem::fluid::detail
