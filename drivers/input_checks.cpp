@@ -128,14 +128,14 @@ the value and what is allowed, when:
 - two solids, or a solid and an obstacle polygon, overlap. The rule: real boundaries may touch
   (distance >= 0), so the shipped cylinder stacks, placed at exactly the DEM gap from each other
   and the walls, pass. Solids are named by their entry and id (`solids/stack[4] (id 4)`, the k-th
-  shape of a generator), obstacles by their entry. Two circles: depth r_a + r_b - d in closed
-  form. Other shapes: the depth is that of the deepest point of one outline inside the other
-  (16 points along each segment or arc, the support point towards the other and the closest
-  points of the DEM's contact geometry), measured with the exact closest points on segments and
-  arcs; an outline wholly inside the other counts. A crossing shallower than the spacing of those
-  points can pass (the DEM then pushes the solids apart). Depths below 1e-9 of the larger size
-  are round-off. Candidate pairs come from a grid of buckets of the median solid size
-  (O(N)): 100,014 cylinders are checked in about 0.1 s;
+  shape of a generator), obstacles by their entry. The depth is exact: two circles,
+  r_a + r_b - d; other convex outlines (polygons, rounded polygons, ellipses' arc splines, and
+  circles against them), the shortest translation that separates them, from the support functions
+  of their segments and arcs (geometry/overlap.hpp); a non-convex polygon (a solid or an
+  obstacle) is split into convex polygons (CGAL's approx_convex_partition_2) and the depth is the
+  largest over its parts: any overlap is found, and the depth named is that of the deepest part.
+  Depths below 1e-9 of the larger size are round-off. Candidate pairs come from a grid of buckets
+  of the median solid size (O(N)): 100,014 cylinders are checked in about 0.1 s;
 - water regions reach outside the tank or are empty;
 - `solver/Belos`, `solver/MueLu` (and the lists merged from `solver/MueLu_solids`,
   `solver/MueLu_one_level`) hold a key or a type that Trilinos' own validators reject, or a

@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <sstream>
 #include <variant>
 
 #include "picdem/core/error.hpp"
 #include "picdem/dem/contact_geometry.hpp"
 #include "picdem/geometry/obstacles.hpp"
+#include "picdem/geometry/overlap.hpp"
 #include "picdem/geometry/shape_registry.hpp"
 
 namespace picdem::driver {
@@ -27,6 +29,9 @@ struct Outline {
   core::Box2 box;
   double circle_radius = 0.0;  ///< > 0: a full circle centred at `centre` (closed form)
   Vec2 centre;
+  /// Convex loops whose union is the region (the outline itself when convex; a non-convex polygon
+  /// partitioned); empty for a non-convex outline with arcs (no registered shape has one).
+  std::vector<std::vector<BoundaryPiece>> convex_parts;
   std::function<bool(const Vec2&)> inside;  ///< closed region test in the world frame
   double size() const { return std::max(box.hi.x - box.lo.x, box.hi.z - box.lo.z); }
 };
@@ -67,16 +72,14 @@ double distance_to(const std::vector<BoundaryPiece>& world, const Vec2& p) {
   return best;
 }
 
-/// How deep the deepest sample of one outline lies inside the other [m] (0: none inside). The
-/// samples: 16 points along every piece, each outline's support point towards the other's box
-/// centre, and the closest points `cp`.
-double sampled_depth(const Outline& a, const Outline& b, const dem::ClosestPoints& cp) {
-  auto centre = [](const Outline& o) { return 0.5 * (o.box.lo + o.box.hi); };
+/// Only for an outline with no convex parts (a non-convex shape with arcs, which no registered
+/// shape has): how deep the deepest of 16 points per piece of one outline (and the closest
+/// points) lies inside the other [m]: a lower bound.
+double sampled_depth(const Outline& a, const Outline& b) {
+  const dem::ClosestPoints cp = dem::closest_points(a.world, b.world);
   double depth = 0.0;
   for (const auto& [from, into] : {std::pair{&a, &b}, std::pair{&b, &a}}) {
     auto points = samples(from->world);
-    const Vec2 d = centre(*into) - centre(*from);
-    if (core::norm(d) > 0.0) points.push_back(dem::support_point(from->world, d / core::norm(d)));
     points.push_back(from == &a ? cp.on_a : cp.on_b);
     for (const Vec2& p : points)
       if (into->inside(p)) depth = std::max(depth, distance_to(into->world, p));
@@ -84,14 +87,28 @@ double sampled_depth(const Outline& a, const Outline& b, const dem::ClosestPoint
   return depth;
 }
 
-/// The overlap depth of two outlines [m]; 0 when they are apart or only touch. Circles in closed
-/// form (r_a + r_b - d); otherwise the deepest sample of one outline inside the other, measured
-/// with the DEM's exact closest points on segments and arcs (contact_geometry.hpp). An outline
-/// wholly inside the other counts (its samples are inside).
+/// The overlap depth of two outlines [m]; <= 0 when they are apart or only touch. Circles in
+/// closed form (r_a + r_b - d); otherwise exactly, the largest penetration depth over the pairs
+/// of their convex parts (geometry/overlap.hpp).
 double overlap_depth(const Outline& a, const Outline& b) {
   if (a.circle_radius > 0.0 && b.circle_radius > 0.0)
     return a.circle_radius + b.circle_radius - core::norm(a.centre - b.centre);
-  return sampled_depth(a, b, dem::closest_points(a.world, b.world));
+  if (a.convex_parts.empty() || b.convex_parts.empty()) return sampled_depth(a, b);
+  return geometry::overlap_depth(a.convex_parts, b.convex_parts);
+}
+
+/// The convex parts of a closed loop (see Outline::convex_parts).
+std::vector<std::vector<BoundaryPiece>> convex_parts(const std::vector<BoundaryPiece>& loop) {
+  if (geometry::is_convex_loop(loop)) return {loop};
+  std::vector<Vec2> vertices;
+  for (const auto& piece : loop) {
+    if (!std::holds_alternative<Segment>(piece)) return {};
+    vertices.push_back(std::get<Segment>(piece).a);
+  }
+  std::vector<std::vector<BoundaryPiece>> parts;
+  for (const auto& p : geometry::convex_partition(vertices))
+    parts.push_back(geometry::polygon_loop(p));
+  return parts;
 }
 
 bool in_polygon(const std::vector<Vec2>& poly, const Vec2& p) {
@@ -123,6 +140,7 @@ std::vector<Outline> solid_outlines(const core::Params& params) {
       const auto shape = placed[k].shape;
       const auto pose = placed[k].pose;
       o.world = dem::to_world(shape->boundary(), pose);
+      o.convex_parts = convex_parts(o.world);
       o.circle_radius = shape->fast_paths().centred_circle_radius;
       o.centre = pose.x;
       o.box = box_of(o.world);
@@ -142,6 +160,7 @@ std::vector<Outline> obstacle_outlines(const core::Params& params) {
       for (std::size_t i = 0; i < poly.size(); ++i)
         o.world.emplace_back(Segment{poly[i], poly[(i + 1) % poly.size()]});
       o.box = box_of(o.world);
+      o.convex_parts = convex_parts(o.world);
       o.inside = [poly](const Vec2& p) { return in_polygon(poly, p); };
       out.push_back(std::move(o));
     }
