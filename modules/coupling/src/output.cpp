@@ -171,8 +171,8 @@ void Output::finish(double t, long long step, const Diagnostics&, const particle
   if (comm_.is_root()) std::ofstream(dir_ + "/timers.txt") << table.str();
   core::log(comm_, "output in " + fs::absolute(dir_).string() +
                        ":\n  pictures/frame_NNNNNN.png (NNNNNN = step)" + movie +
-                       "\n  picdem.xdmf "
-                       "+ frames/*.h5 (open picdem.xdmf in ParaView)\n  timeseries.csv, "
+                       "\n  picdem.xdmf + frames/*.h5 (ParaView; one grid each: cells.xdmf, "
+                       "particles.xdmf, solids.xdmf, obstacles.xdmf)\n  timeseries.csv, "
                        "solids.csv, case_resolved.yaml, timers.txt");
 }
 

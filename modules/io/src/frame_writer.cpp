@@ -376,27 +376,55 @@ void FrameWriter::write(double t, long long step, const CellArrays& cells,
   update_index(step, std::move(grids));
 }
 
+namespace {
+
+// The particles of one frame for meshio.read (meshio 5): one grid, no Time and no Information
+// (it reads neither) and the HDF paths relative to frames/, where the file is.
+void write_meshio_frame(const std::string& path, const std::string& grid_xml) {
+  std::istringstream in(grid_xml);
+  std::string line, body;
+  while (std::getline(in, line)) {
+    if (line.rfind("        <Time ", 0) == 0 || line.rfind(kStepInfo, 0) == 0) continue;
+    const auto at = line.find(">frames/frame_");
+    if (at != std::string::npos) line.erase(at + 1, 7);
+    body += line + '\n';
+  }
+  std::ofstream out(path, std::ios::trunc);
+  out << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n  <Domain>\n"
+      << body << "  </Domain>\n</Xdmf>\n";
+  if (!out) throw core::InputError("cannot write '" + path + "'");
+}
+
+}  // namespace
+
 void FrameWriter::update_index(long long step, std::vector<Entry> grids) {
   on_root(decomposition_.comm(), [&] {
     entries_.erase(std::remove_if(entries_.begin(), entries_.end(),
                                   [&](const Entry& e) { return e.step >= step; }),
                    entries_.end());
-    for (auto& g : grids)
-      if (!g.xml.empty()) entries_.push_back(std::move(g));
-    write_xdmf();
+    for (auto& g : grids) {
+      if (g.xml.empty()) continue;
+      if (g.grid == "particles") {
+        const std::string h5 = frame_path(step);
+        write_meshio_frame(h5.substr(0, h5.size() - 3) + "_particles.xdmf", g.xml);
+      }
+      entries_.push_back(std::move(g));
+    }
+    write_xdmf(xdmf_path(), kGrids);
+    for (const auto& grid : kGrids) write_xdmf(directory_ + "/" + grid + ".xdmf", {grid});
   });
 }
 
-void FrameWriter::write_xdmf() const {
+void FrameWriter::write_xdmf(const std::string& path, const std::vector<std::string>& grids) const {
   // Written to a temporary and renamed: a viewer never sees half an index.
-  const std::string tmp = xdmf_path() + ".tmp";
+  const std::string tmp = path + ".tmp";
   {
     std::ofstream out(tmp, std::ios::trunc);
     out << "<?xml version=\"1.0\" ?>\n"
         << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
         << "<Xdmf Version=\"3.0\">\n"
         << "  <Domain>\n";
-    for (const auto& grid : kGrids) {
+    for (const auto& grid : grids) {
       const bool any = std::any_of(entries_.begin(), entries_.end(),
                                    [&](const Entry& e) { return e.grid == grid; });
       if (!any) continue;
@@ -409,8 +437,8 @@ void FrameWriter::write_xdmf() const {
         << "</Xdmf>\n";
     if (!out) throw core::InputError("cannot write '" + tmp + "'");
   }
-  if (std::rename(tmp.c_str(), xdmf_path().c_str()) != 0)
-    throw core::InputError("cannot rename '" + tmp + "' to '" + xdmf_path() + "'");
+  if (std::rename(tmp.c_str(), path.c_str()) != 0)
+    throw core::InputError("cannot rename '" + tmp + "' to '" + path + "'");
 }
 
 }  // namespace picdem::io

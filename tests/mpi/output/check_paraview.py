@@ -23,7 +23,7 @@ r = subprocess.run([xvfb, "-a", pvpython, script, out, "--out", png], capture_ou
                    text=True, timeout=300)
 failures = []
 m = re.search(r"wrote .* \(t = ([0-9.e+-]+) s, (\d+) particles\)", r.stdout)
-steps = sorted(int(f[6:-3]) for f in os.listdir(os.path.join(out, "frames")))
+steps = sorted(int(f[6:-3]) for f in os.listdir(os.path.join(out, "frames")) if f.endswith(".h5"))
 with h5py.File(os.path.join(out, "frames", "frame_%06d.h5" % steps[-1]), "r") as f:
     t, n = float(f.attrs["time"]), f["particles/xyz"].shape[0]
 if r.returncode != 0 or m is None:

@@ -8,7 +8,11 @@ of exactly the declared shape and type; particles: a Polyvertex whose connectivi
 point once, one node per cell; outlines: Mixed connectivities whose cells use every point once;
 each frame file carries time, step, code_version and ranks equal to the index's; the frames of the
 index are the frame files on disk; meshio's time-series reader reads the particles of every frame
-(positions, velocity, integer ids) equal to the HDF5 data.
+(positions, velocity, integer ids) equal to the HDF5 data. The per-grid indexes GRID.xdmf hold
+exactly picdem.xdmf's collection of that grid and nothing else; every frame with particles has
+frames/frame_NNNNNN_particles.xdmf, which meshio.read reads as one vertex per particle with the
+frame's positions, velocities and ids; meshio.read fails on picdem.xdmf (one grid only: the
+limit doc/output.md states).
 """
 import glob
 import os
@@ -127,7 +131,48 @@ def main(out, ranks):
     on_disk = {int(os.path.basename(p)[6:-3]) for p in glob.glob(os.path.join(out, "frames", "*.h5"))}
     check(on_disk == steps_in_index, f"frame files {sorted(on_disk)} != index {sorted(steps_in_index)}")
     check_meshio(out, positions)
+    check_per_grid(out, collections)
+    check_meshio_frames(out, positions)
     return len(steps_in_index)
+
+
+def text(element):
+    """An element's XML without the whitespace that follows it."""
+    tail, element.tail = element.tail, None
+    out = ET.tostring(element)
+    element.tail = tail
+    return out
+
+
+def check_per_grid(out, collections):
+    for c in collections:
+        path = os.path.join(out, c.get("Name") + ".xdmf")
+        if not check(os.path.isfile(path), f"no {c.get('Name')}.xdmf"):
+            continue
+        grids = ET.parse(path).getroot().find("Domain").findall("Grid")
+        check(len(grids) == 1 and text(grids[0]) == text(c),
+              f"{c.get('Name')}.xdmf is not picdem.xdmf's {c.get('Name')} collection alone")
+
+
+def check_meshio_frames(out, positions):
+    for step, (t, xyz) in sorted(positions.items()):
+        path = os.path.join(out, "frames", "frame_%06d_particles.xdmf" % step)
+        if not check(os.path.isfile(path), f"no {os.path.basename(path)}"):
+            continue
+        mesh = meshio.read(path)
+        with h5py.File(os.path.join(out, "frames", "frame_%06d.h5" % step), "r") as f:
+            check(np.array_equal(mesh.points, xyz), f"meshio.read {path}: points differ")
+            check(len(mesh.cells) == 1 and mesh.cells[0].type == "vertex" and
+                  len(mesh.cells[0].data) == len(xyz), f"meshio.read {path}: not one vertex each")
+            check(np.array_equal(mesh.point_data["velocity"], f["particles/velocity"][()]),
+                  f"meshio.read {path}: velocities differ")
+            check(np.array_equal(mesh.point_data["id"], f["particles/id"][()]) and
+                  mesh.point_data["id"].dtype == np.int64, f"meshio.read {path}: ids differ")
+    try:
+        meshio.read(os.path.join(out, "picdem.xdmf"))
+        check(False, "meshio.read reads picdem.xdmf: doc/output.md says it cannot")
+    except (meshio.ReadError, SystemExit):  # meshio 5.0's read() calls sys.exit on a failure
+        pass
 
 
 def check_meshio(out, positions):
@@ -153,4 +198,5 @@ if __name__ == "__main__":
         print("\n".join("FAIL: " + f for f in failures))
         sys.exit(1)
     print(f"picdem.xdmf: {frames} frames, 4 temporal collections, every data item checked; "
-          "meshio reads the particles of every frame")
+          "the per-grid indexes match; meshio reads the particles of every frame (time series "
+          "and meshio.read of the per-frame files)")

@@ -7,6 +7,13 @@
 // step, code_version and ranks; every dataset its units. Written collectively: each rank writes
 // its hyperslab of every dataset. doc/output.md describes the files.
 //
+// Next to picdem.xdmf, one index per grid (cells.xdmf, solids.xdmf, obstacles.xdmf,
+// particles.xdmf: the same entries, one temporal collection each): ParaView's default XDMF
+// reader (Xdmf3ReaderS) flattens the grids of a file into unnamed pieces, so a grid opened from
+// its own index is what carries its name there (the pipeline source). And per frame
+// frames/frame_NNNNNN_particles.xdmf: that frame's particles as the single grid without Time that
+// meshio.read takes.
+//
 // Coordinates: the paper's (x, z) plane is written as ParaView's (X, Y) with Z = 0.
 #include <cstdint>
 #include <limits>
@@ -62,8 +69,9 @@ class FrameWriter {
               long long keep_up_to_step = std::numeric_limits<long long>::max(),
               std::string code_version = "");
 
-  /// Collective. Writes frames/frame_<step>.h5 and rewrites picdem.xdmf. A grid without any
-  /// element on any rank is left out of this frame's index.
+  /// Collective. Writes frames/frame_<step>.h5 (and frames/frame_<step>_particles.xdmf when there
+  /// are particles) and rewrites picdem.xdmf and the per-grid indexes. A grid without any element
+  /// on any rank is left out of this frame's index.
   void write(double t, long long step, const CellArrays& cells, const PointSet& particles,
              const Polylines& solids, const Polylines& obstacles);
 
@@ -80,7 +88,7 @@ class FrameWriter {
   };
   void read_existing_index(long long keep_up_to_step);
   void update_index(long long step, std::vector<Entry> grids);
-  void write_xdmf() const;
+  void write_xdmf(const std::string& path, const std::vector<std::string>& grids) const;
 
   std::string directory_;
   grid::Decomposition decomposition_;
