@@ -144,7 +144,9 @@ the value and what is allowed, when:
   give them, to the Ifpack2 smoother of that type built on a 4-row matrix (or, for a direct coarse
   type, to MueLu's DirectSolver): a value or type it rejects is named with its key and Trilinos'
   reason, and so is a key that a smoother which does not validate its keys (CHEBYSHEV) never reads
-  and would silently ignore. The `level N` sublists are not checked;
+  and would silently ignore (the keys MueLu takes out of the list itself, such as
+  `chebyshev: use rowsumabs diagonal scaling`, are checked for their type only). The `level N`
+  sublists are not checked;
 - the estimated memory of a rank exceeds what it may use: `run/memory_limit_gb`, or, when 0,
   MemTotal of /proc/meminfo divided by the ranks on the node (the smallest over the ranks). The
   estimate is 80 MB per process + (200 B per cell + 700 B per cell of water at t = 0 + 100 B per

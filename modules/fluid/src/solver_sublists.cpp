@@ -126,17 +126,59 @@ void check_sublist(const std::string& key, const Teuchos::ParameterList& muelu,
   }
 }
 
+// Keys of a smoother sublist that MueLu's Ifpack2Smoother reads and removes itself before
+// Ifpack2 sees the list (MueLu_Ifpack2Smoother_def.hpp, Trilinos 13.2), with their types.
+struct MueLuKey {
+  const char* name;
+  const char* type;
+  bool (*is)(const Teuchos::ParameterEntry&);
+};
+const MueLuKey kMueLuKeys[] = {
+    {"chebyshev: use rowsumabs diagonal scaling", "bool",
+     [](const Teuchos::ParameterEntry& e) { return e.isType<bool>(); }},
+    {"chebyshev: rowsumabs diagonal replacement tolerance", "real",
+     [](const Teuchos::ParameterEntry& e) { return e.isType<double>(); }},
+    {"chebyshev: rowsumabs diagonal replacement value", "real",
+     [](const Teuchos::ParameterEntry& e) { return e.isType<double>(); }},
+    {"smoother: use blockcrsmatrix storage", "bool",
+     [](const Teuchos::ParameterEntry& e) { return e.isType<bool>(); }},
+    {"smoother: neighborhood type", "string",
+     [](const Teuchos::ParameterEntry& e) { return e.isType<std::string>(); }},
+    {"pcoarsen: hi basis", "string",
+     [](const Teuchos::ParameterEntry& e) { return e.isType<std::string>(); }},
+};
+
+// `muelu` with MueLu's own keys (of the right type) taken out of the sublist `name`.
+void strip_muelu_keys(const std::string& key, Teuchos::ParameterList& muelu,
+                      const std::string& name) {
+  if (!muelu.isSublist(name)) return;
+  Teuchos::ParameterList& l = muelu.sublist(name);
+  for (const auto& k : kMueLuKeys) {
+    if (!l.isParameter(k.name)) continue;
+    if (!k.is(l.getEntry(k.name)))
+      throw core::InputError("key '" + key + "/" + name + "/" + k.name +
+                             "' = " + value_text(l.getEntry(k.name)) +
+                             " is not allowed: MueLu reads it as a " + k.type);
+    l.remove(k.name);
+  }
+}
+
 }  // namespace
 
-void check_muelu_sublists(const std::string& key, const Teuchos::ParameterList& muelu) {
+void check_muelu_sublists(const std::string& key, const Teuchos::ParameterList& given) {
   auto type_of = [&](const char* k, const std::string& fallback) {
-    return muelu.isType<std::string>(k) ? muelu.get<std::string>(k) : fallback;
+    return given.isType<std::string>(k) ? given.get<std::string>(k) : fallback;
   };
   // MueLu's defaults: RELAXATION smoothers, a SuperLU coarse solve (KLU2 when it is missing).
   const std::string smoother = type_of("smoother: type", "RELAXATION");
   const std::string pre = type_of("smoother: pre type", smoother);
   const std::string post = type_of("smoother: post type", smoother);
   const std::string coarse = type_of("coarse: type", "SuperLU");
+  const bool coarse_ifpack2 = coarse != "none" && Ifpack2::Factory::isSupported<Matrix>(coarse);
+  Teuchos::ParameterList muelu = given;
+  for (const char* name : {"smoother: params", "smoother: pre params", "smoother: post params"})
+    strip_muelu_keys(key, muelu, name);
+  if (coarse_ifpack2) strip_muelu_keys(key, muelu, "coarse: params");
   const auto ifpack2 = [](const std::string& t) { return "Ifpack2's " + t + " smoother"; };
   check_sublist(key, muelu, "smoother: params", pre, ifpack2(pre), apply_ifpack2);
   if (post != pre)
@@ -144,7 +186,7 @@ void check_muelu_sublists(const std::string& key, const Teuchos::ParameterList& 
   check_sublist(key, muelu, "smoother: pre params", pre, ifpack2(pre), apply_ifpack2);
   check_sublist(key, muelu, "smoother: post params", post, ifpack2(post), apply_ifpack2);
   if (coarse == "none") return;
-  if (Ifpack2::Factory::isSupported<Matrix>(coarse))
+  if (coarse_ifpack2)
     check_sublist(key, muelu, "coarse: params", coarse, ifpack2(coarse), apply_ifpack2);
   else
     check_sublist(key, muelu, "coarse: params", coarse,

@@ -12,7 +12,9 @@ namespace picdem::fluid::detail {
 /// smoother (every "smoother" type, and a coarse type MueLu builds as a smoother) is created on a
 /// 4-row matrix and given the sublist (Ifpack2 rejects a wrong value or type; a key that it does
 /// not read, which Ifpack2 would silently ignore, is rejected here); any other coarse type is
-/// MueLu's DirectSolver, constructed with the sublist (it validates the keys). Throws
+/// MueLu's DirectSolver, constructed with the sublist (it validates the keys). The keys MueLu's
+/// Ifpack2Smoother reads and removes itself (chebyshev: use rowsumabs diagonal scaling, ...) are
+/// only checked for their type. Throws
 /// core::InputError "key 'KEY/SUBLIST/NAME' = VALUE is not allowed: WHY".
 void check_muelu_sublists(const std::string& key, const Teuchos::ParameterList& muelu);
 
