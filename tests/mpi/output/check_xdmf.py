@@ -8,11 +8,11 @@ of exactly the declared shape and type; particles: a Polyvertex whose connectivi
 point once, one node per cell; outlines: Mixed connectivities whose cells use every point once;
 each frame file carries time, step, code_version and ranks equal to the index's; the frames of the
 index are the frame files on disk; meshio's time-series reader reads the particles of every frame
-(positions, velocity, integer ids) equal to the HDF5 data. The per-grid indexes GRID.xdmf hold
-exactly picdem.xdmf's collection of that grid and nothing else; every frame with particles has
-frames/frame_NNNNNN_particles.xdmf, which meshio.read reads as one vertex per particle with the
-frame's positions, velocities and ids; meshio.read fails on picdem.xdmf (one grid only: the
-limit doc/output.md states).
+(positions, velocity, integer ids) equal to the HDF5 data, from picdem.xdmf and from
+particles.xdmf. The per-grid indexes GRID.xdmf hold exactly picdem.xdmf's collection of that
+grid and nothing else; every frame with particles has frames/frame_NNNNNN_particles.xdmf, which
+meshio.read reads as one vertex per particle with the frame's positions, velocities and ids;
+meshio.read fails on picdem.xdmf (one grid only: the limit doc/output.md states).
 """
 import glob
 import os
@@ -130,7 +130,8 @@ def main(out, ranks):
         check(all(a < b for a, b in zip(steps, steps[1:])), f"{name}: steps not increasing")
     on_disk = {int(os.path.basename(p)[6:-3]) for p in glob.glob(os.path.join(out, "frames", "*.h5"))}
     check(on_disk == steps_in_index, f"frame files {sorted(on_disk)} != index {sorted(steps_in_index)}")
-    check_meshio(out, positions)
+    check_meshio(out, positions, "picdem.xdmf")
+    check_meshio(out, positions, "particles.xdmf")
     check_per_grid(out, collections)
     check_meshio_frames(out, positions)
     return len(steps_in_index)
@@ -175,21 +176,21 @@ def check_meshio_frames(out, positions):
         pass
 
 
-def check_meshio(out, positions):
+def check_meshio(out, positions, index):
     steps = sorted(positions)
-    with meshio.xdmf.TimeSeriesReader(os.path.join(out, "picdem.xdmf")) as reader:
+    with meshio.xdmf.TimeSeriesReader(os.path.join(out, index)) as reader:
         points, cells = reader.read_points_cells()
-        check(np.array_equal(points, positions[steps[0]][1]), "meshio: points of frame 0 differ")
+        check(np.array_equal(points, positions[steps[0]][1]), f"meshio {index}: points of frame 0 differ")
         check(len(cells) == 1 and cells[0].type == "vertex" and
-              cells[0].data.shape == (len(points), 1), "meshio: not one vertex cell per point")
-        check(reader.num_steps == len(steps), f"meshio: {reader.num_steps} steps, {len(steps)} frames")
+              cells[0].data.shape == (len(points), 1), f"meshio {index}: not one vertex cell per point")
+        check(reader.num_steps == len(steps), f"meshio {index}: {reader.num_steps} steps, {len(steps)} frames")
         for k in range(reader.num_steps):
             t, point_data, _ = reader.read_data(k)
             want_t, xyz = positions[steps[k]]
-            check(t == want_t, f"meshio: time {t} of frame {k}, the index says {want_t}")
-            check(np.array_equal(point_data["position"], xyz), f"meshio: positions of frame {k}")
-            check(point_data["velocity"].shape == xyz.shape, f"meshio: velocity shape of frame {k}")
-            check(point_data["id"].dtype == np.int64, f"meshio: id of frame {k} not int64")
+            check(t == want_t, f"meshio {index}: time {t} of frame {k}, the index says {want_t}")
+            check(np.array_equal(point_data["position"], xyz), f"meshio {index}: positions of frame {k}")
+            check(point_data["velocity"].shape == xyz.shape, f"meshio {index}: velocity shape of frame {k}")
+            check(point_data["id"].dtype == np.int64, f"meshio {index}: id of frame {k} not int64")
 
 
 if __name__ == "__main__":
