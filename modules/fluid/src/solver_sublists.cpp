@@ -163,9 +163,7 @@ void strip_muelu_keys(const std::string& key, Teuchos::ParameterList& muelu,
   }
 }
 
-}  // namespace
-
-void check_muelu_sublists(const std::string& key, const Teuchos::ParameterList& given) {
+void check_lists(const std::string& key, const Teuchos::ParameterList& given) {
   auto type_of = [&](const char* k, const std::string& fallback) {
     return given.isType<std::string>(k) ? given.get<std::string>(k) : fallback;
   };
@@ -191,6 +189,18 @@ void check_muelu_sublists(const std::string& key, const Teuchos::ParameterList& 
   else
     check_sublist(key, muelu, "coarse: params", coarse,
                   "MueLu's direct coarse solver ('" + coarse + "')", apply_direct);
+}
+
+}  // namespace
+
+void check_muelu_sublists(const std::string& key, const Teuchos::ParameterList& given) {
+  try {
+    check_lists(key, given);
+  } catch (const core::InputError& e) {
+    if (key == "solver/MueLu") throw;
+    throw core::InputError(std::string(e.what()) + "\n(" + key + " stands for solver/MueLu with " +
+                           key + " merged over it: the key may come from either)");
+  }
 }
 
 }  // namespace picdem::fluid::detail
