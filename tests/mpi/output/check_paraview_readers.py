@@ -9,9 +9,10 @@ and the last frame time (doc/output.md, "Why this shape"):
   nx * nz cells and the outlines' line count;
 - Xdmf3ReaderS (the default: OpenDataFile picks it for .xdmf) on picdem.xdmf: the same four
   grids, in the same order at every time, as pieces of one multipiece dataset;
-- Xdmf3ReaderS on each per-grid index GRID.xdmf: that grid alone as one dataset (not a composite)
-  with the counts above (particles: with the velocity vector);
-- Xdmf3ReaderS on frames/frame_NNNNNN_particles.xdmf: that frame's particles.
+- Xdmf3ReaderT on picdem.xdmf: the same four grids as blocks in the same order at every time;
+- all three readers on each per-grid index GRID.xdmf: that grid alone as one dataset
+  (not a composite) with the counts above (particles: with the velocity vector);
+- the three readers on frames/frame_NNNNNN_particles.xdmf: that frame's particles.
 """
 import os
 import sys
@@ -86,7 +87,10 @@ def main(out):
     older = simple.XDMFReader(FileNames=[index_file])
     default = simple.OpenDataFile(index_file)
     check(default.GetXMLName() == "Xdmf3ReaderS", f"OpenDataFile picks {default.GetXMLName()}")
+    temporal = simple.Xdmf3ReaderT(FileName=index_file)
     per_grid = {g: simple.OpenDataFile(os.path.join(out, g + ".xdmf")) for g in GRIDS}
+    per_grid_t = {g: simple.Xdmf3ReaderT(FileName=os.path.join(out, g + ".xdmf")) for g in GRIDS}
+    per_grid_old = {g: simple.XDMFReader(FileNames=[os.path.join(out, g + ".xdmf")]) for g in GRIDS}
     for t in picked:
         want = expected(out, frames[t])
         older.UpdatePipeline(time=t)
@@ -101,19 +105,31 @@ def main(out):
         check(len(pieces) == 4, f"Xdmf3ReaderS at t = {t}: {len(pieces)} pieces, expected 4")
         for (_, data), g in zip(pieces, GRIDS):
             same(data, want[g], f"Xdmf3ReaderS, picdem.xdmf piece {g} at t = {t}")
+        temporal.UpdatePipeline(time=t)
+        got = blocks(sm.Fetch(temporal))
+        check(len(got) == 4, f"Xdmf3ReaderT at t = {t}: {len(got)} blocks, expected 4")
+        for (_, data), g in zip(got, GRIDS):
+            same(data, want[g], f"Xdmf3ReaderT, picdem.xdmf block {g} at t = {t}")
         for g, source in per_grid.items():
             source.UpdatePipeline(time=t)
             data = sm.Fetch(source)
             same(data, want[g], f"Xdmf3ReaderS, {g}.xdmf at t = {t}")
+            per_grid_t[g].UpdatePipeline(time=t)
+            same(sm.Fetch(per_grid_t[g]), want[g], f"Xdmf3ReaderT, {g}.xdmf at t = {t}")
+            per_grid_old[g].UpdatePipeline(time=t)
+            same(sm.Fetch(per_grid_old[g]), (("vtkImageData",) + want[g][1:]) if g == "cells"
+                 else want[g], f"XDMF Reader, {g}.xdmf at t = {t}")
             if g == "particles" and data is not None:
                 v = data.GetPointData().GetArray("velocity")
                 check(v is not None and v.GetNumberOfComponents() == 3,
                       f"particles.xdmf at t = {t}: no 3-component velocity")
         single = os.path.join(out, "frames", "frame_%06d_particles.xdmf" % frames[t])
-        reader = simple.Xdmf3ReaderS(FileName=single)
-        reader.UpdatePipeline()
-        same(sm.Fetch(reader), want["particles"], f"Xdmf3ReaderS, {os.path.basename(single)}")
-        simple.Delete(reader)
+        for make in (simple.Xdmf3ReaderS, simple.Xdmf3ReaderT, simple.XDMFReader):
+            reader = make(FileNames=[single]) if make is simple.XDMFReader else make(FileName=single)
+            reader.UpdatePipeline()
+            same(sm.Fetch(reader), want["particles"],
+                 f"{reader.GetXMLName()}, {os.path.basename(single)}")
+            simple.Delete(reader)
     return len(picked)
 
 
@@ -122,5 +138,6 @@ if __name__ == "__main__":
     if failures:
         print("\n".join("FAIL: " + f for f in failures))
         sys.exit(1)
-    print(f"ParaView 'XDMF Reader' and Xdmf3ReaderS checked at {n} frame times: named, stable "
-          "blocks (older reader), stable pieces, one plain dataset per grid file (default reader)")
+    print(f"ParaView's XDMF Reader, Xdmf3ReaderS and Xdmf3ReaderT checked at {n} frame times: "
+          "named, stable blocks (older reader), stable pieces or blocks, one plain dataset per "
+          "grid file and per frame's particle file")
