@@ -10,7 +10,8 @@ centre +- d50/2 (2.5 mm; the sizes run from 4 to 6 mm):
   H_inf = highest grain top at the end.
 Rest: L_inf and H_inf 0.1 s before the end are printed next to the final ones.
 Fits log((L_inf - L0)/L0) and log(H_inf/L0) against log a by least squares over a >= 2
-(the large-a regime of Lube et al. 2005) and over all a, writes OUT_DIR/collapse.csv and, if
+(the large-a regime of Lube et al. 2005), over a >= 1 and over all a; prints the fastest grain at
+the end; writes OUT_DIR/collapse.csv and, if
 matplotlib is present, OUT_DIR/granular_column_collapse.png.
 usage: analyse.py OUT_DIR
 """
@@ -19,7 +20,7 @@ import math
 import os
 import sys
 
-WIDTH = {0.5: 0.2113, 1: 0.1494, 2: 0.1056, 4: 0.0747, 8: 0.0528}
+WIDTH = {0.5: 0.3033, 1: 0.2145, 2: 0.1517, 4: 0.1072, 8: 0.0758}
 R50, FLOOR, GAP_EJECT = 0.0025, 0.004, 0.018
 
 
@@ -29,6 +30,16 @@ def frames(path):
         for row in csv.DictReader(f):
             out.setdefault(float(row["t"]), []).append((float(row["x"]), float(row["z"])))
     return out
+
+
+def fastest(path, t):
+    """The largest grain speed at output time t [m/s]."""
+    v = 0.0
+    with open(path) as f:
+        for row in csv.DictReader(f):
+            if abs(float(row["t"]) - t) < 1e-9:
+                v = max(v, math.hypot(float(row["u"]), float(row["w"])))
+    return v
 
 
 def runout(grains):
@@ -71,21 +82,24 @@ def main():
         l_prev, _ = runout(fr[t_prev])
         rows.append(dict(a_nom=a_nom, n=len(fr[ts[0]]), L0=l0, H0=h0, a=h0 / l0, t_end=t_end,
                          L_inf=l_inf, H_inf=height(fr[t_end]), ejected=ejected,
-                         L_prev=l_prev, H_prev=height(fr[t_prev])))
+                         L_prev=l_prev, H_prev=height(fr[t_prev]), vmax=fastest(path, t_end)))
     print("a_nom   N     L0      H0      a      t_end  L_inf   (0.1 s before)  H_inf   (before)"
-          "  ejected  (L_inf-L0)/L0  H_inf/L0")
+          "  ejected  (L_inf-L0)/L0  H_inf/L0  v_max [m/s]")
     for r in rows:
         r["run"] = (r["L_inf"] - r["L0"]) / r["L0"]
         r["h"] = r["H_inf"] / r["L0"]
         print(f"{r['a_nom']:<5g} {r['n']:5d}  {r['L0']:.4f}  {r['H0']:.4f}  {r['a']:.3f}  "
               f"{r['t_end']:.2f}  {r['L_inf']:.4f}  ({r['L_prev']:.4f})       {r['H_inf']:.4f}  "
-              f"({r['H_prev']:.4f})  {r['ejected']:5d}    {r['run']:.3f}          {r['h']:.3f}")
+              f"({r['H_prev']:.4f})  {r['ejected']:5d}    {r['run']:.3f}          {r['h']:.3f}     "
+              f"{r['vmax']:.3f}")
     with open(os.path.join(out, "collapse.csv"), "w") as f:
-        keys = ["a_nom", "n", "L0", "H0", "a", "t_end", "L_inf", "H_inf", "ejected", "run", "h"]
+        keys = ["a_nom", "n", "L0", "H0", "a", "t_end", "L_inf", "H_inf", "ejected", "run", "h",
+                "vmax"]
         f.write(",".join(keys) + "\n")
         for r in rows:
             f.write(",".join(f"{r[k]:.6g}" for k in keys) + "\n")
-    for label, sel in (("a >= 2", [r for r in rows if r["a_nom"] >= 2]), ("all a", rows)):
+    for label, sel in (("a >= 2", [r for r in rows if r["a_nom"] >= 2]),
+                       ("a >= 1", [r for r in rows if r["a_nom"] >= 1]), ("all a", rows)):
         if len(sel) < 2:
             continue
         br, cr = fit([r["a"] for r in sel], [r["run"] for r in sel])
@@ -108,6 +122,8 @@ def plot(rows, out):
     ax[0].loglog(a, [r["run"] for r in rows], "ko", label="picdem (disks, rough floor)")
     ax[0].loglog([x for x in grid if x < 1.8], [1.2 * x for x in grid if x < 1.8], "b-",
                  label="Lube et al. 2005: 1.2 a (a < 1.8)")
+    ax[0].loglog([x for x in grid if x < 3], [1.8 * x for x in grid if x < 3], "b:",
+                 label="Lajeunesse et al. 2005: 1.8 a (a < 3)")
     ax[0].loglog([x for x in grid if x > 2.8], [1.9 * x ** (2 / 3) for x in grid if x > 2.8], "r-",
                  label="Lube et al. 2005: 1.9 a^(2/3) (a > 2.8)")
     ax[0].set_xlabel("a = H0/L0")
