@@ -79,11 +79,13 @@ std::vector<T> read_slice(const io::CheckpointReader& in, const std::string& nam
     return in.read_slice_int(name);
 }
 
-void pause_before_commit_if_asked(const core::Comm& comm, long long step, const std::string& tmp) {
+// The crash test's hook: the particles are written, the grid and the solids not yet.
+void pause_in_data_if_asked(const core::Comm& comm, long long step, const std::string& tmp) {
   const char* at = std::getenv("PICDEM_CHECKPOINT_PAUSE_AT_STEP");
   if (!at || std::atoll(at) != step) return;
   comm.barrier();
-  if (comm.is_root()) std::cerr << "checkpoint paused before commit: " << tmp << std::endl;
+  if (comm.is_root())
+    std::cerr << "checkpoint paused in the middle of the data: " << tmp << std::endl;
   std::this_thread::sleep_for(std::chrono::seconds(60));
 }
 
@@ -114,6 +116,7 @@ void write_checkpoint(const CheckpointParts& parts, const CheckpointHeader& head
   std::as_const(parts.particles).for_each_saved([&](const char* name, const auto& v) {
     out.write(std::string("particles/") + name, v);
   });
+  pause_in_data_if_asked(parts.comm, head.step, out.temporary_path());
   std::vector<int> boxes;
   if (parts.fluid) {
     std::as_const(*parts.fluid).for_each_saved([&](const char* name, const auto& f) {
@@ -130,7 +133,6 @@ void write_checkpoint(const CheckpointParts& parts, const CheckpointHeader& head
   std::as_const(snap).for_each([&](const char* name, const auto& v) {
     out.write(std::string("dem/") + name, root ? v : std::decay_t<decltype(v)>{});
   });
-  pause_before_commit_if_asked(parts.comm, head.step, out.temporary_path());
   out.commit();
 }
 

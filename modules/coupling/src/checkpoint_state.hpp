@@ -36,8 +36,9 @@ struct CheckpointParts {
 };
 
 /// Collective: writes `head` and the parts to `path` (via path.tmp). Environment variable
-/// PICDEM_CHECKPOINT_PAUSE_AT_STEP=N (tests): at step N the writer stops for 60 s between the
-/// complete .tmp file and the rename, after printing "checkpoint paused before commit" on stderr.
+/// PICDEM_CHECKPOINT_PAUSE_AT_STEP=N (tests): at step N the writer stops for 60 s in the middle of
+/// the data (the particles written, the grid and the solids not yet), after printing "checkpoint
+/// paused in the middle of the data" on stderr.
 void write_checkpoint(const CheckpointParts& parts, const CheckpointHeader& head,
                       const std::string& path);
 /// Collective: replaces the parts' state by the checkpoint's (same or another rank count) and

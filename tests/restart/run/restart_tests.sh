@@ -91,26 +91,41 @@ layout)
   $cmp "$(ck "$W/A" 40)" "$(ck "$W/B" 40)" close 1e-5 1e-5 || fail "2 x 1 -> 1 x 2: not close"
   ;;
 kill_during_write)
-  # SIGKILL while the checkpoint of step 40 is being written (the writer pauses between the
-  # complete .tmp and the rename): step 20's checkpoint survives, the run restarts from it and
-  # ends with the state of an uninterrupted run.
+  # SIGKILL while the checkpoint of step 40 is being written (the writer pauses in the middle of
+  # the data: the particles written, the grid and the solids not yet): the partial .tmp is smaller
+  # than the complete file and refused as a checkpoint, step 20's checkpoint survives, the run
+  # restarts from it and ends with the state of an uninterrupted run.
   read -r -a c <<< "$(case_args floating_disk)"
   every=(--set checkpoint/every_steps=20 --set checkpoint/keep=5)
   "$picdem" "${c[@]}" "${every[@]}" --max-steps 60 -o "$W/A" > "$W/A.log" 2>&1 ||
     fail "uninterrupted run failed"
+  paused="checkpoint paused in the middle of the data"
   PICDEM_CHECKPOINT_PAUSE_AT_STEP=40 "$picdem" "${c[@]}" "${every[@]}" --max-steps 60 \
     -o "$W/B" > "$W/B.log" 2>&1 &
   pid=$!
   for _ in $(seq 600); do
-    grep -q "checkpoint paused before commit" "$W/B.log" && break
+    grep -q "$paused" "$W/B.log" && break
     sleep 0.1
   done
-  grep -q "checkpoint paused before commit" "$W/B.log" || { kill -9 $pid; fail "no pause seen"; }
+  grep -q "$paused" "$W/B.log" || { kill -9 $pid; fail "no pause seen"; }
   kill -9 $pid
   wait $pid 2> /dev/null
-  [ -f "$(ck "$W/B" 40).tmp" ] || fail "no partial checkpoint_00000040.h5.tmp left by the kill"
+  tmp="$(ck "$W/B" 40).tmp"
+  [ -f "$tmp" ] || fail "no partial checkpoint_00000040.h5.tmp left by the kill"
   [ -f "$(ck "$W/B" 40)" ] && fail "a checkpoint of step 40 was committed before the kill"
   [ -f "$(ck "$W/B" 20)" ] || fail "the previous checkpoint (step 20) is gone"
+  # the kill came before the grid's data: the .tmp lacks at least their bytes
+  part=$(stat -c %s "$tmp") full=$(stat -c %s "$(ck "$W/A" 40)")
+  grid=$($python -c "import h5py,sys; f=h5py.File(sys.argv[1],'r'); \
+print(sum(f['grid'][n].id.get_storage_size() for n in f['grid']))" "$(ck "$W/A" 40)") ||
+    fail "cannot read the grid's size"
+  echo "killed during the write: the .tmp holds $part bytes, the complete file $full, its grid data $grid"
+  [ $((part + grid)) -le "$full" ] || fail "the .tmp holds the grid's data: killed after the data"
+  cp "$tmp" "$W/partial.h5"
+  "$picdem" "${c[@]}" --max-steps 41 --restart "$W/partial.h5" -o "$W/P" > "$W/P.log" 2>&1
+  code=$?
+  [ $code -eq 2 ] || fail "the partial file was not refused (exit code $code): $(tail -3 "$W/P.log")"
+  echo "the partial file is refused: $(grep -m1 "partial.h5" "$W/P.log")"
   "$picdem" "${c[@]}" "${every[@]}" --max-steps 60 --restart latest -o "$W/B" > "$W/B2.log" 2>&1 ||
     fail "restart after the kill failed: $(tail -3 "$W/B2.log")"
   grep -q "restarted from .*checkpoint_00000020.h5" "$W/B2.log" || fail "did not restart from step 20"
