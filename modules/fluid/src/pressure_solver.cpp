@@ -9,9 +9,12 @@
 #include <BelosTpetraAdapter.hpp>
 #include <Ifpack2_Factory.hpp>
 #include <MueLu_CreateTpetraPreconditioner.hpp>
+#include <MueLu_HierarchyUtils.hpp>
 #include <MueLu_MasterList.hpp>
+#include <MueLu_ParameterListInterpreter.hpp>
 #include <Tpetra_Core.hpp>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -67,10 +70,11 @@ Teuchos::ParameterList merged(const Teuchos::ParameterList& base,
 /// MueLu's list for a system: solver/MueLu, then solver/MueLu_solids if it couples solids, then
 /// solver/MueLu_one_level if it has no coarser level and several ranks.
 Teuchos::ParameterList muelu_list(const SolverSettings& s, bool with_solids, long long unknowns,
-                                  int ranks) {
+                                  int ranks, bool* one_level = nullptr) {
   Teuchos::ParameterList m = merged(s.muelu, with_solids ? &s.muelu_solids : nullptr);
-  if (ranks > 1 && unknowns <= m.get<int>("coarse: max size", 2000))
-    m = merged(m, &s.muelu_one_level);
+  const bool one = ranks > 1 && unknowns <= m.get<int>("coarse: max size", 2000);
+  if (one) m = merged(m, &s.muelu_one_level);
+  if (one_level) *one_level = one;
   return m;
 }
 
@@ -124,15 +128,44 @@ SolverSettings settings_from(const core::Params& params) {
   return s;
 }
 
+/// MueLu's interpreters of the solver's lists, made once: turning a parameter list into
+/// factories took a fifth of every setup (doc/performance.md). Each hierarchy is still built
+/// from scratch, so it is a function of the matrix alone (bitwise restarts). One per list: with
+/// or without solids, with or without the one-level override.
+struct Interpreters {
+  using Manager = MueLu::HierarchyManager<double, OP::local_ordinal_type, OP::global_ordinal_type,
+                                          OP::node_type>;
+  std::array<RCP<Manager>, 4> made;
+};
+
 /// MueLu's hierarchy for the system's matrix: the list for this system (muelu_list) with the
-/// cell-centre coordinates in "user data".
+/// cell-centre coordinates on level 0, set up by the kept interpreter of that list.
 RCP<OP> preconditioner(const detail::TpetraSystem& ts, const SolverSettings& settings,
-                       bool with_solids, long long unknowns, int ranks) {
+                       bool with_solids, long long unknowns, int ranks, Interpreters& kept) {
+  using SC = double;
+  using LO = OP::local_ordinal_type;
+  using GO = OP::global_ordinal_type;
+  using NO = OP::node_type;
   core::ScopedTimer timer("fluid: pressure preconditioner");
-  Teuchos::ParameterList muelu = muelu_list(settings, with_solids, unknowns, ranks);
-  muelu.sublist("user data").set("Coordinates", ts.coordinates());
+  bool one_level = false;
+  Teuchos::ParameterList muelu = muelu_list(settings, with_solids, unknowns, ranks, &one_level);
+  RCP<Interpreters::Manager>& made = kept.made[(with_solids ? 2 : 0) + (one_level ? 1 : 0)];
   try {
-    return MueLu::CreateTpetraPreconditioner(RCP<OP>(ts.matrix()), muelu);
+    const auto comm = ts.matrix()->getDomainMap()->getComm();
+    if (made.is_null())
+      made = rcp(new MueLu::ParameterListInterpreter<SC, LO, GO, NO>(muelu, comm));
+    auto A = MueLu::TpetraCrs_To_XpetraMatrix<SC, LO, GO, NO>(ts.matrix());
+    Teuchos::ParameterList user;
+    user.sublist("user data")
+        .set("Coordinates",
+             MueLu::TpetraMultiVector_To_XpetraMultiVector<SC, LO, GO, NO>(ts.coordinates()));
+    RCP<MueLu::Hierarchy<SC, LO, GO, NO>> H = made->CreateHierarchy();
+    H->setlib(A->getDomainMap()->lib());
+    MueLu::HierarchyUtils<SC, LO, GO, NO>::AddNonSerializableDataToHierarchy(*made, *H, user);
+    H->GetLevel(0)->Set("A", A);
+    H->SetProcRankVerbose(comm->getRank());
+    made->SetupHierarchy(*H);
+    return rcp(new MueLu::TpetraOperator<SC, LO, GO, NO>(H));
   } catch (const Teuchos::Exceptions::InvalidParameter& e) {
     throw core::InputError(std::string("solver/MueLu: MueLu rejected the settings: ") + e.what());
   }
@@ -174,7 +207,7 @@ void run_cg(const detail::TpetraSystem& ts, const RCP<OP>& prec, const SolverSet
 /// holds the solution on return. Throws SolverError when the tolerance is not reached.
 SolveStats solve_rows(detail::TpetraSystem& ts, const grid::Decomposition& d,
                       const SolverSettings& settings, const detail::RowContributions& rows,
-                      std::vector<double>& x) {
+                      std::vector<double>& x, Interpreters& interpreters) {
   const auto t0 = std::chrono::steady_clock::now();
   SolveStats stats;
   if (!Tpetra::isInitialized())
@@ -192,7 +225,8 @@ SolveStats solve_rows(detail::TpetraSystem& ts, const grid::Decomposition& d,
     return stats;
   }
   stats.reused_structure = ts.load(rows, x, d, settings.rebalance);
-  const RCP<OP> prec = preconditioner(ts, settings, rows.with_solids, stats.unknowns, comm.size());
+  const RCP<OP> prec =
+      preconditioner(ts, settings, rows.with_solids, stats.unknowns, comm.size(), interpreters);
   stats.setup_seconds = seconds_since(t0);
   const auto t1 = std::chrono::steady_clock::now();
   run_cg(ts, prec, settings, b_norm, stats);
@@ -222,6 +256,7 @@ struct PressureSolver::Impl {
   detail::RowContributions rows;  // buffers kept between solves
   grid::GridArray<int> row_of;
   detail::TpetraSystem system;
+  Interpreters interpreters;
   Impl(const grid::Decomposition& dec, const core::Params& params)
       : d(dec), halo(dec), settings(settings_from(params)), row_of(dec, grid::Stagger::Cell, -1) {}
 
@@ -262,7 +297,8 @@ SolveStats PressureSolver::solve(const CellStates& cells, const Apertures& E,
   std::vector<double> x(rows.cells.size());
   for (std::size_t r = 0; r < rows.cells.size(); ++r)
     x[r] = p(static_cast<int>(rows.cells[r] % g.nx), static_cast<int>(rows.cells[r] / g.nx));
-  SolveStats stats = solve_rows(impl_->system, impl_->d, impl_->settings, rows, x);
+  SolveStats stats =
+      solve_rows(impl_->system, impl_->d, impl_->settings, rows, x, impl_->interpreters);
   stats.setup_seconds += assembly;
   const core::IndexBox own = impl_->d.owned_cells();
   for (int k = own.k0; k < own.k1; ++k)
@@ -280,7 +316,8 @@ std::vector<core::SolidLoads> PressureSolver::solid_loads(const grid::CellField&
 SolveStats solve_system(const grid::Decomposition& d, const core::Params& params,
                         const AssembledSystem& system, std::vector<double>& x) {
   detail::TpetraSystem ts;
-  return solve_rows(ts, d, settings_from(params), detail::contributions(system), x);
+  Interpreters interpreters;
+  return solve_rows(ts, d, settings_from(params), detail::contributions(system), x, interpreters);
 }
 
 struct LinearAlgebraScope::Impl {
