@@ -13,7 +13,6 @@
 #include "picdem/core/log.hpp"
 #include "picdem/core/timer.hpp"
 #include "picdem/coupling/checkpoint.hpp"
-#include "picdem/coupling/free_surface.hpp"
 #include "picdem/coupling/output.hpp"
 #include "picdem/coupling/solids_in_fluid.hpp"
 #include "picdem/dem/dem_solver.hpp"
@@ -73,6 +72,7 @@ struct Simulation::Impl {
   particles::ParticleSet particles;
   std::unique_ptr<dem::DemSolver> dem;  // null without solids (with water)
   std::vector<geometry::Obstacle> obstacles;
+  ParticleOccupancy occupancy;  // the particles' S, from the last diagnostics to the next cells
 
   // the clock and what the last step reported
   double t = 0.0;
@@ -224,12 +224,12 @@ void Simulation::step() {
   fluid::SolveStats solve;
   if (fluid) {
     solids = place_solids(L, set, m.dem.get(), m.obstacles, m.fluid.apertures);  // geometry
-    mark_cells(L, set, solids.cut, m.particles, m.fluid);                        // transfer
+    mark_cells(L, set, solids.cut, m.particles, m.occupancy, m.fluid);           // transfer
     if (correct_density(L, set, m.step, solids, m.fluid, m.density_solver.get(), m.particles))
-      mark_cells(L, set, solids.cut, m.particles, m.fluid);    // density: moved, cells again
-    particles_to_grid(L, set, solids, m.particles, m.fluid);   // transfer
-    add_forces(L, set.fluid, solids.scene, dt, m.fluid);       // forces
-    const auto collision = predict_contacts(m.dem.get(), dt);  // contact
+      mark_cells(L, set, solids.cut, m.particles, m.occupancy, m.fluid);  // density: cells again
+    particles_to_grid(L, set, solids, m.particles, m.fluid);              // transfer
+    add_forces(L, set.fluid, solids.scene, dt, m.fluid);                  // forces
+    const auto collision = predict_contacts(m.dem.get(), dt);             // contact
     solve = solve_pressure(L, set, solids, collision, dt, *m.pressure, m.fluid);     // pressure
     project(L, set, dt, m.fluid);                                                    // project
     if (m.dem) m.fluid_loads = advance_solids(m.pressure.get(), fluid, dt, *m.dem);  // solids
@@ -242,7 +242,7 @@ void Simulation::step() {
   m.t += dt;
   ++m.step;
   m.diag = record_diagnostics(L, set, m.t, m.step, dt, solve, m.particles, m.dem.get(),
-                              fluid ? &solids : nullptr, fluid);
+                              fluid ? &solids : nullptr, m.occupancy, fluid);
 }
 
 const fluid::FluidState& Simulation::fluid() const {

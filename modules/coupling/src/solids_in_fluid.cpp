@@ -1,6 +1,7 @@
 #include "picdem/coupling/solids_in_fluid.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -90,14 +91,14 @@ bool fluid_cell(const fluid::CellStates& cells, int i, int k) {
 }
 
 // Hydrostatic quadrature load of one piece: -int rho g.(x - x_c) (n, r x n) dl, exact along the
-// piece (arcs included) from its first moments about x_c.
-void add_quadrature_load(const geometry::WettedPiece& piece, const QuadratureOptions& q,
-                         double* r) {
-  if (!q.hydrostatic) return;
+// piece (arcs included) from its first moments about x_c; 0 without the quadrature.
+std::array<double, 3> quadrature_load(const geometry::WettedPiece& piece,
+                                      const QuadratureOptions& q) {
+  if (!q.hydrostatic) return {0.0, 0.0, 0.0};
   const Vec2 rg = q.rho * q.g;
-  r[0] -= rg.x * piece.dx_n_dl.x + rg.z * piece.dz_n_dl.x;
-  r[1] -= rg.x * piece.dx_n_dl.z + rg.z * piece.dz_n_dl.z;
-  r[2] -= rg.x * piece.d_r_cross_n_dl.x + rg.z * piece.d_r_cross_n_dl.z;
+  return {-(rg.x * piece.dx_n_dl.x + rg.z * piece.dz_n_dl.x),
+          -(rg.x * piece.dx_n_dl.z + rg.z * piece.dz_n_dl.z),
+          -(rg.x * piece.d_r_cross_n_dl.x + rg.z * piece.d_r_cross_n_dl.z)};
 }
 
 }  // namespace
@@ -117,12 +118,8 @@ std::vector<fluid::SolidCoupling> solid_couplings(
     double* r = coll.row(l.id);
     r[0] = l.force.x, r[1] = l.force.z, r[2] = l.torque;
   }
-  for (const auto& piece : cut.pieces)
-    if (piece.body >= 0 && own.contains(piece.i, piece.k) && fluid_cell(cells, piece.i, piece.k))
-      add_quadrature_load(piece, quadrature,
-                          coll.row(scene.states[static_cast<std::size_t>(piece.body)].id));
-  comm.sum_in_place(coll.v);
-
+  // Each owned fluid cell's pieces: their rows a_{s,c} and quadrature loads, the latter added
+  // to the solid's own load and to the table every rank sums for V*.
   std::map<int, fluid::SolidCoupling> by_body;  // body index -> coupling, in body order
   std::map<std::pair<int, long long>, std::size_t> slot;
   for (const auto& piece : cut.pieces) {
@@ -137,8 +134,12 @@ std::vector<fluid::SolidCoupling> solid_couplings(
     }
     auto& a = c.a[it->second];
     a[0] += piece.n_dl.x, a[1] += piece.n_dl.z, a[2] += piece.r_cross_n_dl;
-    add_quadrature_load(piece, quadrature, c.load.data());
+    const auto q = quadrature_load(piece, quadrature);
+    double* r = coll.row(scene.states[static_cast<std::size_t>(piece.body)].id);
+    for (int m = 0; m < 3; ++m) r[m] += q[m], c.load[static_cast<std::size_t>(m)] += q[m];
   }
+  comm.sum_in_place(coll.v);
+
   std::vector<fluid::SolidCoupling> out;
   for (auto& [body, c] : by_body) {
     const auto& st = scene.states[static_cast<std::size_t>(body)];
@@ -167,49 +168,6 @@ std::vector<core::SolidLoads> fluid_loads(const fluid::PressureSolver& pressure,
                                                      : core::SolidLoads{st.id, {0.0, 0.0}, 0.0});
   }
   return out;
-}
-
-void rigid_face_velocities(const SolidScene& scene, const geometry::CutCells& cut,
-                           const fluid::Apertures& E, const grid::Decomposition& d,
-                           grid::FaceField& u, grid::FaceField& w,
-                           grid::GridArray<signed char>& u_valid,
-                           grid::GridArray<signed char>& w_valid) {
-  const auto& spec = d.spec();
-  auto rigid = [&](int body, Vec2 x) {
-    if (body < 0) return Vec2{};
-    const auto& st = scene.states[static_cast<std::size_t>(body)];
-    return st.v + core::cross(st.omega, x - st.x);
-  };
-  // The body covering either cell beside a face (cells outside the window count as uncovered).
-  auto covering = [&](int i0, int k0, int i1, int k1, bool& any) {
-    const auto& win = cut.window.cells;
-    const bool in0 = win.contains(i0, k0), in1 = win.contains(i1, k1);
-    int b = in0 ? cut.cutting_body(i0, k0) : -1;
-    if (b < 0 && in1) b = cut.cutting_body(i1, k1);
-    any = b >= 0 || (in0 && cut.cutting_obstacle(i0, k0) >= 0) ||
-          (in1 && cut.cutting_obstacle(i1, k1) >= 0);
-    return b;
-  };
-  const auto bu = u.storage();
-  for (int k = bu.k0; k < bu.k1; ++k)
-    for (int i = bu.i0; i < bu.i1; ++i) {
-      if (i <= 0 || i >= spec.nx || k < 0 || k >= spec.nz || E.E_x(i, k) > 0.0) continue;
-      bool any = false;
-      const int b = covering(i - 1, k, i, k, any);
-      if (!any) continue;
-      u(i, k) = rigid(b, spec.position(Stagger::FaceX, i, k)).x;
-      u_valid(i, k) = 1;
-    }
-  const auto bw = w.storage();
-  for (int k = bw.k0; k < bw.k1; ++k)
-    for (int i = bw.i0; i < bw.i1; ++i) {
-      if (k <= 0 || k >= spec.nz || i < 0 || i >= spec.nx || E.E_z(i, k) > 0.0) continue;
-      bool any = false;
-      const int b = covering(i, k - 1, i, k, any);
-      if (!any) continue;
-      w(i, k) = rigid(b, spec.position(Stagger::FaceZ, i, k)).z;
-      w_valid(i, k) = 1;
-    }
 }
 
 // ---------------------------------------------------------------------------------------------

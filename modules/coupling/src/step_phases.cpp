@@ -8,8 +8,10 @@
 
 #include "picdem/core/error.hpp"
 #include "picdem/core/timer.hpp"
-#include "picdem/coupling/free_surface.hpp"
+#include "picdem/fluid/bodies.hpp"
+#include "picdem/fluid/free_surface.hpp"
 #include "picdem/fluid/viscous.hpp"
+#include "picdem/particles/occupancy.hpp"
 #include "picdem/particles/particles.hpp"
 #include "viscous_bodies.hpp"
 
@@ -88,102 +90,31 @@ SolidsAtStart place_solids(const Layout& L, const StepSettings& set, const dem::
 
 namespace {
 
-// A cut cell whose sliver of fluid holds no particle, with S <= 1/2 at its (covered) centre, would
-// be air: p = 0 inside the water, and a pressure jump that drives the flow through its faces at
-// many times the speed around it. Such cells are taken in groups connected through open faces
-// (two slivers side by side on a body); a group whose every other neighbour across an open face
-// is fluid (or solid) cannot be at the free surface: it is fluid.
-void wet_enclosed_cut_cells(const grid::Decomposition& d, const geometry::CutCells& cut,
-                            const fluid::Apertures& E, fluid::CellStates& cells) {
-  const auto fluid = static_cast<signed char>(CellState::Fluid);
-  const auto air = static_cast<signed char>(CellState::Air);
-  const auto solid = static_cast<signed char>(CellState::Solid);
-  const auto& spec = d.spec();
-  const auto b = cells.storage();
-  auto candidate = [&](int i, int k) {
-    return cells.in_storage(i, k) && cells(i, k) == air && cut.fluid_fraction(i, k) < 1.0;
-  };
-  grid::GridArray<signed char> seen(d, Stagger::Cell, 0);
-  std::vector<std::pair<int, int>> group, todo;
-  for (int k = b.k0; k < b.k1; ++k)
-    for (int i = b.i0; i < b.i1; ++i) {
-      if (seen(i, k) || !candidate(i, k)) continue;
-      group.clear();
-      todo.assign(1, {i, k});
-      seen(i, k) = 1;
-      bool enclosed = true;
-      while (!todo.empty()) {
-        const auto [ci, ck] = todo.back();
-        todo.pop_back();
-        group.emplace_back(ci, ck);
-        const struct {
-          double E;
-          int i, k;
-        } faces[4] = {{E.E_x(ci, ck), ci - 1, ck},
-                      {E.E_x(ci + 1, ck), ci + 1, ck},
-                      {E.E_z(ci, ck), ci, ck - 1},
-                      {E.E_z(ci, ck + 1), ci, ck + 1}};
-        for (const auto& f : faces) {
-          if (f.E <= 0.0 || f.i < 0 || f.k < 0 || f.i >= spec.nx || f.k >= spec.nz) continue;
-          if (!cells.in_storage(f.i, f.k)) {
-            enclosed = false;  // the group reaches the edge of this rank's window
-            continue;
-          }
-          if (candidate(f.i, f.k)) {
-            if (!seen(f.i, f.k)) seen(f.i, f.k) = 1, todo.emplace_back(f.i, f.k);
-            continue;
-          }
-          const signed char nb = cells(f.i, f.k);
-          enclosed = enclosed && (nb == fluid || nb == solid);
-        }
-      }
-      if (enclosed)
-        for (const auto& [gi, gk] : group) cells(gi, gk) = fluid;
-    }
-}
-
-// Occupancy S of the particles, divided by the tent's open share next to solids.
-void occupancy(const Layout& L, const StepSettings& set, const geometry::CutCells& cut,
-               const particles::ParticleSet& particles, grid::CellField& S) {
+// The particles' occupancy S before the open-share correction, from the cache when current.
+void particle_occupancy(const Layout& L, const StepSettings& set,
+                        const particles::ParticleSet& particles, ParticleOccupancy& occ) {
+  if (occ.current) return;
   const int per_cell = set.particles.per_cell_1d * set.particles.per_cell_1d;
-  particle_occupancy(particles, L.d, L.halo, per_cell, S);
-  if (set.has_bodies) open_share_correction(S, cut, L.d);
+  if (occ.S.data().empty()) occ.S = grid::CellField(L.d, Stagger::Cell, 0.0);
+  particles::occupancy(particles, L.d, L.halo, per_cell, occ.S);
+  occ.current = true;
 }
 
 }  // namespace
 
-// The particle occupancy S and the level set phi = 1/2 - S (free_surface.hpp), S divided by the
-// share of the tent kernel open to fluid so that solids do not read as air. Cells: fluid = holds
-// particles, or is a cut cell below the free surface (phi < 0: a cut cell may hold no particle in
-// its sliver of fluid); solid = covered; air otherwise.
+// The occupancy S, divided by the tent's open share next to bodies, the level set and the cell
+// states (fluid::mark_cells).
 void mark_cells(const Layout& L, const StepSettings& set, const geometry::CutCells& cut,
-                const particles::ParticleSet& particles, fluid::FluidState& fluid) {
+                const particles::ParticleSet& particles, ParticleOccupancy& occ,
+                fluid::FluidState& fluid) {
   core::ScopedTimer timer("transfer: mark cells");
   grid::GridArray<int> count(L.d, Stagger::Cell, 0);
   particles::count_per_cell(particles, L.halo, count);
-  occupancy(L, set, cut, particles, fluid.occupancy);
-  const auto b = fluid.cells.storage();
-  for (int k = b.k0; k < b.k1; ++k)
-    for (int i = b.i0; i < b.i1; ++i) {
-      CellState c = count(i, k) > 0 ? CellState::Fluid : CellState::Air;
-      const double S = fluid.occupancy(i, k);
-      if (set.has_bodies) {
-        const double f = cut.fluid_fraction(i, k);
-        if (f <= 0.0)
-          c = CellState::Solid;
-        else if (c == CellState::Air && f < 1.0 && S > 0.5)
-          c = CellState::Fluid;
-      }
-      fluid.phi(i, k) = 0.5 - S;
-      fluid.cells(i, k) = static_cast<signed char>(c);
-    }
-  if (set.has_bodies) {
-    wet_enclosed_cut_cells(L.d, cut, fluid.apertures, fluid.cells);
-    // A group reaching the edge of one rank's window is seen whole by its owner: owners decide.
-    L.halo.forward(fluid.cells);
-  }
-  if (set.ghost_fluid)
-    fluid.surface = fluid::surface_fractions(fluid.phi, fluid.cells, L.d, set.theta_min);
+  particle_occupancy(L, set, particles, occ);
+  fluid.occupancy = occ.S;
+  occ.current = false;  // the particles move before the next use
+  fluid::mark_cells(count, set.has_bodies ? &cut : nullptr, L.d, L.halo, set.ghost_fluid,
+                    set.theta_min, fluid);
 }
 
 namespace {
@@ -196,7 +127,8 @@ void extend(const Layout& L, const StepSettings& set, const SolidScene& scene,
             const geometry::CutCells& cut, bool mask, fluid::FluidState& f) {
   if (mask) fluid::fluid_faces(f.cells, f.apertures, f.u_valid, f.w_valid);
   if (set.has_bodies)
-    rigid_face_velocities(scene, cut, f.apertures, L.d, f.u, f.w, f.u_valid, f.w_valid);
+    fluid::rigid_face_velocities(scene.states, cut, f.apertures, L.d, f.u, f.w, f.u_valid,
+                                 f.w_valid);
   fluid::extend_velocity(f.u, f.w, f.u_valid, f.w_valid, L.d.halo(), L.halo);
 }
 
@@ -272,16 +204,7 @@ void grid_to_particles(const Layout& L, const StepSettings& set, const SolidsAtS
   core::ScopedTimer timer("transfer: grid to particles");
   extend(L, set, after, solids.cut, false, f);
   fluid::enforce_walls(f.u, f.w, set.fluid, L.d);
-  if (set.has_bodies) {
-    const auto& spec = set.spec;
-    const auto bu = f.u.storage(), bw = f.w.storage();
-    for (int k = bu.k0; k < bu.k1; ++k)
-      for (int i = bu.i0; i < bu.i1; ++i)
-        if (i > 0 && i < spec.nx && f.apertures.E_x(i, k) <= 0.0) f.u_old(i, k) = f.u(i, k);
-    for (int k = bw.k0; k < bw.k1; ++k)
-      for (int i = bw.i0; i < bw.i1; ++i)
-        if (k > 0 && k < spec.nz && f.apertures.E_z(i, k) <= 0.0) f.w_old(i, k) = f.w(i, k);
-  }
+  if (set.has_bodies) fluid::rigid_faces_into_flip_base(set.spec, f);
   particles::from_grid(particles, set.particles, f.u_old, f.w_old, f.u, f.w, set.spec);
   if (dem && set.beta < 1.0)
     damp_gap_particles(particles, all_contacts(*dem, L.comm), set.spec.h, set.beta);
@@ -327,8 +250,8 @@ bool correct_density(const Layout& L, const StepSettings& set, long long step,
   const auto& d = L.d;
   constexpr double cap = 0.5;  // |S - 1| taken at most: half a cell's particles per step
   grid::CellField source(d, Stagger::Cell, 0.0);
-  const bool mine = excess_area(f.occupancy, f.cells, set.has_bodies ? &solids.cut : nullptr,
-                                set.density_relaxation, cap, d, source);
+  const bool mine = fluid::excess_area(f.occupancy, f.cells, set.has_bodies ? &solids.cut : nullptr,
+                                       set.density_relaxation, cap, d, source);
   if (!L.comm.any(mine)) return false;
   fluid::FluidConfig unit = set.fluid;
   unit.rho = 1.0, unit.no_slip = false;
@@ -381,24 +304,18 @@ void advect_particles(const Layout& L, const StepSettings& set, long long step,
   particles::count_per_cell(particles, L.halo, count);
   std::function<bool(Vec2)> reject;
   if (solids) reject = [&](Vec2 p) { return locator.inside(p); };
-  const fluid::CellStates* reseed_cells = &f.cells;
-  fluid::CellStates uncut;
-  if (solids) {
-    uncut = f.cells;
-    const auto b = uncut.storage();
-    for (int k = b.k0; k < b.k1; ++k)
-      for (int i = b.i0; i < b.i1; ++i)
-        if (cut.fluid_fraction(i, k) < 1.0)
-          uncut(i, k) = static_cast<signed char>(CellState::Solid);
-    reseed_cells = &uncut;
-  }
-  particles::reseed(particles, set.particles, L.d, count, *reseed_cells, f.u, f.w, step, reject);
+  if (solids)
+    particles::reseed(particles, set.particles, L.d, count, fluid::reseed_cells(f.cells, cut), f.u,
+                      f.w, step, reject);
+  else
+    particles::reseed(particles, set.particles, L.d, count, f.cells, f.u, f.w, step, reject);
 }
 
 Diagnostics record_diagnostics(const Layout& L, const StepSettings& set, double t, long long step,
                                double dt, const fluid::SolveStats& solve,
                                const particles::ParticleSet& P, const dem::DemSolver* dem,
-                               const SolidsAtStart* solids, fluid::FluidState* fluid) {
+                               const SolidsAtStart* solids, ParticleOccupancy& occ,
+                               fluid::FluidState* fluid) {
   const core::Comm& comm = L.comm;
   Diagnostics g;
   g.t = t, g.dt = dt, g.step = step;
@@ -432,9 +349,12 @@ Diagnostics record_diagnostics(const Layout& L, const StepSettings& set, double 
   g.max_speed = comm.max(vmax);
   g.particles = comm.sum(static_cast<long long>(P.x.size()));
   if (fluid) {
-    occupancy(L, set, solids->cut, P, fluid->occupancy);
-    g.fluid_volume =
-        occupied_area(fluid->occupancy, L.d, comm, set.has_bodies ? &solids->cut : nullptr);
+    // S of the particles where the step leaves them: kept for the next step's cells
+    particle_occupancy(L, set, P, occ);
+    fluid->occupancy = occ.S;
+    const geometry::CutCells* cut = set.has_bodies ? &solids->cut : nullptr;
+    if (cut) fluid::open_share_correction(fluid->occupancy, *cut, L.d);
+    g.fluid_volume = fluid::occupied_area(fluid->occupancy, L.d, comm, cut);
   }
   for (double x : set.level_probes)
     g.levels.push_back(fluid ? fluid->surface_height(x) : std::nan(""));

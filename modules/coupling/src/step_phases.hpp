@@ -53,6 +53,14 @@ struct SolidsAtStart {
   geometry::CutCells cut;
 };
 
+/// The particles' occupancy before the open-share correction (particles::occupancy), computed
+/// once for the particles where a step leaves them: by the diagnostics, then read by the next
+/// step's cells. `current` is cleared when the particles move (the cells of a step take it).
+struct ParticleOccupancy {
+  grid::CellField S;
+  bool current = false;
+};
+
 /// Collective: the largest particle speed |v| over all ranks (0 without particles).
 double max_particle_speed(const particles::ParticleSet& particles, const core::Comm& comm);
 
@@ -67,9 +75,11 @@ SolidsAtStart place_solids(const Layout& L, const StepSettings& set, const dem::
                            const std::vector<geometry::Obstacle>& obstacles,
                            fluid::Apertures& apertures);
 
-/// transfer (cells): occupancy S, level set phi, cell states, surface fractions.
+/// transfer (cells): occupancy S (from `occ` when current), level set phi, cell states, surface
+/// fractions.
 void mark_cells(const Layout& L, const StepSettings& set, const geometry::CutCells& cut,
-                const particles::ParticleSet& particles, fluid::FluidState& fluid);
+                const particles::ParticleSet& particles, ParticleOccupancy& occ,
+                fluid::FluidState& fluid);
 
 /// density: moves crowded or thinned particles (positions only); true when they moved. `solver`
 /// (its Poisson equation) may be null when free_surface/density_correction is 0.
@@ -115,10 +125,12 @@ void advect_particles(const Layout& L, const StepSettings& set, long long step,
                       const fluid::FluidState& fluid, particles::ParticleSet& particles);
 
 /// Figures of the state after the step (t, step: its end); a non-finite particle or solid
-/// anywhere stops the run on every rank. fluid/solids: nullptr without water.
+/// anywhere stops the run on every rank. fluid/solids: nullptr without water. The occupancy of
+/// the particles is left in `occ` for the next step.
 Diagnostics record_diagnostics(const Layout& L, const StepSettings& set, double t, long long step,
                                double dt, const fluid::SolveStats& solve,
                                const particles::ParticleSet& particles, const dem::DemSolver* dem,
-                               const SolidsAtStart* solids, fluid::FluidState* fluid);
+                               const SolidsAtStart* solids, ParticleOccupancy& occ,
+                               fluid::FluidState* fluid);
 
 }  // namespace picdem::coupling

@@ -1,10 +1,10 @@
-// The source of the density correction (free_surface.hpp, doc/coupling.md) against values worked
-// by hand: relaxation (S - 1) f h^2, capped; a deficit (S < 1) only where the 3x3 block holds no
-// air (at the surface S < 1 is the surface); weighted by the fluid fraction of a cut cell.
+// The source of the density correction (fluid/free_surface.hpp, doc/coupling.md) against values
+// worked by hand: relaxation (S - 1) f h^2, capped; a deficit (S < 1) only where the 3x3 block
+// holds no air (at the surface S < 1 is the surface); weighted by the fluid fraction of a cut cell.
 #include <gtest/gtest.h>
 
-#include "picdem/coupling/free_surface.hpp"
 #include "picdem/coupling/solids_in_fluid.hpp"
+#include "picdem/fluid/free_surface.hpp"
 
 using namespace picdem;
 using namespace picdem::grid;
@@ -37,7 +37,7 @@ struct Tank {
 TEST(ExcessArea, UniformDensityHasNoSource) {
   Tank t;
   CellField source(*t.d, Stagger::Cell, 1.0);
-  EXPECT_FALSE(coupling::excess_area(t.S, t.cells, nullptr, 0.5, 0.5, *t.d, source));
+  EXPECT_FALSE(fluid::excess_area(t.S, t.cells, nullptr, 0.5, 0.5, *t.d, source));
   for (int k = 0; k < 6; ++k)
     for (int i = 0; i < 6; ++i) EXPECT_EQ(source(i, k), 0.0) << i << " " << k;
 }
@@ -51,7 +51,7 @@ TEST(ExcessArea, CappedAndNoDeficitAtTheSurface) {
   t.S(2, 3) = 1.2;  // row 3 touches the air of row 4: crowded all the same
   t.S(1, 3) = 0.4;  // the surface, not a deficit
   CellField source(*t.d, Stagger::Cell, 0.0);
-  ASSERT_TRUE(coupling::excess_area(t.S, t.cells, nullptr, 0.5, 0.5, *t.d, source));
+  ASSERT_TRUE(fluid::excess_area(t.S, t.cells, nullptr, 0.5, 0.5, *t.d, source));
   const double a = 0.1 * 0.1;
   EXPECT_NEAR(source(2, 1), 0.5 * 0.4 * a, 1e-15);
   EXPECT_NEAR(source(3, 1), -0.5 * 0.3 * a, 1e-15);
@@ -72,6 +72,6 @@ TEST(ExcessArea, CutCellWeightedByItsFluidFraction) {
   ASSERT_NEAR(cut.fluid_fraction(2, 1), 0.5, 1e-12);
   t.S(2, 1) = 1.4;
   CellField source(*t.d, Stagger::Cell, 0.0);
-  ASSERT_TRUE(coupling::excess_area(t.S, t.cells, &cut, 1.0, 0.5, *t.d, source));
+  ASSERT_TRUE(fluid::excess_area(t.S, t.cells, &cut, 1.0, 0.5, *t.d, source));
   EXPECT_NEAR(source(2, 1), 0.4 * 0.5 * 0.01, 1e-15);
 }

@@ -1,7 +1,7 @@
 #pragma once
 // The fluid-solid part of the coupled step (METHOD.md sections 3, 4 and 6): cut cells at the
 // solids' poses, the solid couplings of the augmented pressure equation (eqs. 5-6), the fluid
-// loads J p, rigid velocities on covered faces, pushing particles out of solids and damping the
+// loads J p, pushing particles out of solids and damping the
 // fluid trapped in contact gaps (eq. 20). Plain functions over plain data.
 #include <cstdint>
 #include <vector>
@@ -59,14 +59,6 @@ std::vector<fluid::SolidCoupling> solid_couplings(
 /// over ranks), from the rows of the last solve of `pressure` (PressureSolver::solid_loads).
 std::vector<core::SolidLoads> fluid_loads(const fluid::PressureSolver& pressure,
                                           const grid::CellField& p, const dem::DemSolver& dem);
-
-/// Faces closed by a body get its rigid velocity (obstacles: 0) and are marked valid, so that
-/// interpolation next to a solid sees the solid's motion.
-void rigid_face_velocities(const SolidScene& scene, const geometry::CutCells& cut,
-                           const fluid::Apertures& E, const grid::Decomposition& d,
-                           grid::FaceField& u, grid::FaceField& w,
-                           grid::GridArray<signed char>& u_valid,
-                           grid::GridArray<signed char>& w_valid);
 
 /// Finds the body holding a point and the nearest point on its boundary.
 class SolidLocator {

@@ -1,49 +1,10 @@
-#include "picdem/coupling/free_surface.hpp"
+#include "picdem/fluid/free_surface.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
-namespace picdem::coupling {
-
-namespace {
-// Mass of the 1D tent of half-width 1 centred at c (in cell units) that lies in [0, n].
-double tent_mass_inside(double c, double n) {
-  auto cdf = [](double t) {  // integral of the tent from -1 to t
-    if (t <= -1) return 0.0;
-    if (t >= 1) return 1.0;
-    return t <= 0 ? 0.5 * (1 + t) * (1 + t) : 1.0 - 0.5 * (1 - t) * (1 - t);
-  };
-  return cdf(n - c) - cdf(0.0 - c);
-}
-}  // namespace
-
-void particle_occupancy(const particles::ParticleSet& ps, const grid::Decomposition& d,
-                        const grid::Halo& halo, int particles_per_cell, grid::CellField& S) {
-  const auto& spec = d.spec();
-  S.fill(0.0);
-  const double inv_h = 1.0 / spec.h;
-  for (std::size_t n = 0; n < ps.x.size(); ++n) {
-    // Cell-centred coordinates: centre of cell i at s = i.
-    const double sx = (ps.x[n] - spec.origin.x) * inv_h - 0.5;
-    const double sz = (ps.z[n] - spec.origin.z) * inv_h - 0.5;
-    const int i0 = static_cast<int>(std::floor(sx)), k0 = static_cast<int>(std::floor(sz));
-    const double fx = sx - i0, fz = sz - k0;
-    // W = (1 - |dx|)(1 - |dz|) on the four surrounding centres
-    const double wx[2] = {1.0 - fx, fx}, wz[2] = {1.0 - fz, fz};
-    for (int b = 0; b < 2; ++b)
-      for (int a = 0; a < 2; ++a)
-        if (S.in_storage(i0 + a, k0 + b)) S(i0 + a, k0 + b) += wx[a] * wz[b];
-  }
-  halo.reverse_add(S);
-  const auto own = d.owned_cells();
-  for (int k = own.k0; k < own.k1; ++k) {
-    const double mz = tent_mass_inside(k + 0.5, spec.nz);
-    for (int i = own.i0; i < own.i1; ++i)
-      S(i, k) /= particles_per_cell * tent_mass_inside(i + 0.5, spec.nx) * mz;
-  }
-  halo.forward(S);
-}
+namespace picdem::fluid {
 
 void open_share_correction(grid::CellField& S, const geometry::CutCells& cut,
                            const grid::Decomposition& d) {
@@ -133,10 +94,10 @@ double occupied_area(const grid::CellField& S, const grid::Decomposition& d, con
   return comm.sum(area_cells) * spec.h * spec.h;
 }
 
-bool excess_area(const grid::CellField& S, const fluid::CellStates& cells,
-                 const geometry::CutCells* cut, double relaxation, double cap,
-                 const grid::Decomposition& d, grid::CellField& source) {
-  const auto fluid = static_cast<signed char>(grid::CellState::Fluid);
+bool excess_area(const grid::CellField& S, const CellStates& cells, const geometry::CutCells* cut,
+                 double relaxation, double cap, const grid::Decomposition& d,
+                 grid::CellField& source) {
+  const auto wet = static_cast<signed char>(grid::CellState::Fluid);
   const auto air = static_cast<signed char>(grid::CellState::Air);
   const auto& spec = d.spec();
   const auto own = d.owned_cells();
@@ -146,7 +107,7 @@ bool excess_area(const grid::CellField& S, const fluid::CellStates& cells,
   bool any = false;
   for (int k = own.k0; k < own.k1; ++k)
     for (int i = own.i0; i < own.i1; ++i) {
-      if (cells(i, k) != fluid) continue;
+      if (cells(i, k) != wet) continue;
       const double excess = std::clamp(S(i, k) - 1.0, -cap, cap);
       if (excess < 0.0) {
         bool inside = true;
@@ -162,4 +123,4 @@ bool excess_area(const grid::CellField& S, const fluid::CellStates& cells,
   return any;
 }
 
-}  // namespace picdem::coupling
+}  // namespace picdem::fluid

@@ -1,9 +1,7 @@
 #pragma once
-// The free surface from the particles, below cell resolution.
+// The free surface from the particles' occupancy, below cell resolution.
 //
-// Occupancy S at cell centres: S(x_c) = sum_p W(x_c - x_p) / (n_ppc m(x_c)), W the bilinear tent
-// of half-width h (the P2G kernel), n_ppc the particles per full cell, m(x_c) the share of the
-// tent's mass inside the tank (1 away from walls). S = 1 in the bulk and crosses 1/2 on the
+// Occupancy S at cell centres (particles::occupancy): S = 1 in the bulk and crosses 1/2 on the
 // surface: across a flat surface the tent's symmetry puts S = 1/2 exactly on it. phi = 1/2 - S is
 // the level set: negative in the fluid.
 //
@@ -19,13 +17,8 @@
 #include "picdem/fluid/fluid.hpp"
 #include "picdem/geometry/cut_cells.hpp"
 #include "picdem/grid/field.hpp"
-#include "picdem/particles/particle_set.hpp"
 
-namespace picdem::coupling {
-
-/// S over owned + halo cells (reverse-added, then forwarded).
-void particle_occupancy(const particles::ParticleSet& ps, const grid::Decomposition& d,
-                        const grid::Halo& halo, int particles_per_cell, grid::CellField& S);
+namespace picdem::fluid {
 
 /// S /= (tent mass on open fluid) / (tent mass) over the cell and its eight neighbours, where the
 /// open share exceeds 5%; over the whole storage window (cut cells must cover it).
@@ -35,16 +28,16 @@ void open_share_correction(grid::CellField& S, const geometry::CutCells& cut,
 /// Area where the bilinear interpolant of S between cell centres exceeds 1/2, summed over the
 /// owned cells of every rank (S needs a current halo). With cut cells, each cell's part is
 /// weighted by its fluid fraction: the water's area, without the solids in it.
-double occupied_area(const grid::CellField& S, const grid::Decomposition& d,
-                     const core::Comm& comm, const geometry::CutCells* cut = nullptr);
+double occupied_area(const grid::CellField& S, const grid::Decomposition& d, const core::Comm& comm,
+                     const geometry::CutCells* cut = nullptr);
 
 /// The particles' excess area, the source of the density correction (doc/coupling.md): on every
 /// owned fluid cell, relaxation (S - 1) f h^2 with f the cell's fluid fraction (1 without `cut`),
 /// where S > 1, and where S < 1 only in cells whose eight neighbours hold no air (at the surface
 /// S < 1 is the surface, not a deficit); |S - 1| is capped at `cap`. 0 on every other cell.
 /// S and cells need a current halo. Returns whether any owned cell is nonzero.
-bool excess_area(const grid::CellField& S, const fluid::CellStates& cells,
-                 const geometry::CutCells* cut, double relaxation, double cap,
-                 const grid::Decomposition& d, grid::CellField& source);
+bool excess_area(const grid::CellField& S, const CellStates& cells, const geometry::CutCells* cut,
+                 double relaxation, double cap, const grid::Decomposition& d,
+                 grid::CellField& source);
 
-}  // namespace picdem::coupling
+}  // namespace picdem::fluid

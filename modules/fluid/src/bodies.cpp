@@ -1,0 +1,157 @@
+#include "picdem/fluid/bodies.hpp"
+
+#include <utility>
+
+#include "picdem/fluid/free_surface.hpp"
+
+namespace picdem::fluid {
+
+using core::Vec2;
+using grid::CellState;
+using grid::Stagger;
+
+void mark_cells(const grid::GridArray<int>& count, const geometry::CutCells* cut,
+                const grid::Decomposition& d, const grid::Halo& halo, bool ghost_fluid,
+                double theta_min, FluidState& f) {
+  if (cut) open_share_correction(f.occupancy, *cut, d);
+  const auto b = f.cells.storage();
+  for (int k = b.k0; k < b.k1; ++k)
+    for (int i = b.i0; i < b.i1; ++i) {
+      CellState c = count(i, k) > 0 ? CellState::Fluid : CellState::Air;
+      const double S = f.occupancy(i, k);
+      if (cut) {
+        const double frac = cut->fluid_fraction(i, k);
+        if (frac <= 0.0)
+          c = CellState::Solid;
+        else if (c == CellState::Air && frac < 1.0 && S > 0.5)
+          c = CellState::Fluid;
+      }
+      f.phi(i, k) = 0.5 - S;
+      f.cells(i, k) = static_cast<signed char>(c);
+    }
+  if (cut) {
+    wet_enclosed_cut_cells(d, *cut, f.apertures, f.cells);
+    // A group reaching the edge of one rank's window is seen whole by its owner: owners decide.
+    halo.forward(f.cells);
+  }
+  if (ghost_fluid) f.surface = surface_fractions(f.phi, f.cells, d, theta_min);
+}
+
+// A cut cell whose sliver of fluid holds no particle, with S <= 1/2 at its (covered) centre, would
+// be air: p = 0 inside the water, and a pressure jump that drives the flow through its faces at
+// many times the speed around it. Such cells are taken in groups connected through open faces
+// (two slivers side by side on a body); a group whose every other neighbour across an open face
+// is fluid (or solid) cannot be at the free surface: it is fluid.
+void wet_enclosed_cut_cells(const grid::Decomposition& d, const geometry::CutCells& cut,
+                            const Apertures& E, CellStates& cells) {
+  const auto wet = static_cast<signed char>(CellState::Fluid);
+  const auto air = static_cast<signed char>(CellState::Air);
+  const auto solid = static_cast<signed char>(CellState::Solid);
+  const auto& spec = d.spec();
+  const auto b = cells.storage();
+  auto candidate = [&](int i, int k) {
+    return cells.in_storage(i, k) && cells(i, k) == air && cut.fluid_fraction(i, k) < 1.0;
+  };
+  grid::GridArray<signed char> seen(d, Stagger::Cell, 0);
+  std::vector<std::pair<int, int>> group, todo;
+  for (int k = b.k0; k < b.k1; ++k)
+    for (int i = b.i0; i < b.i1; ++i) {
+      if (seen(i, k) || !candidate(i, k)) continue;
+      group.clear();
+      todo.assign(1, {i, k});
+      seen(i, k) = 1;
+      bool enclosed = true;
+      while (!todo.empty()) {
+        const auto [ci, ck] = todo.back();
+        todo.pop_back();
+        group.emplace_back(ci, ck);
+        const struct {
+          double E;
+          int i, k;
+        } faces[4] = {{E.E_x(ci, ck), ci - 1, ck},
+                      {E.E_x(ci + 1, ck), ci + 1, ck},
+                      {E.E_z(ci, ck), ci, ck - 1},
+                      {E.E_z(ci, ck + 1), ci, ck + 1}};
+        for (const auto& face : faces) {
+          if (face.E <= 0.0 || face.i < 0 || face.k < 0 || face.i >= spec.nx || face.k >= spec.nz)
+            continue;
+          if (!cells.in_storage(face.i, face.k)) {
+            enclosed = false;  // the group reaches the edge of this rank's window
+            continue;
+          }
+          if (candidate(face.i, face.k)) {
+            if (!seen(face.i, face.k)) seen(face.i, face.k) = 1, todo.emplace_back(face.i, face.k);
+            continue;
+          }
+          const signed char nb = cells(face.i, face.k);
+          enclosed = enclosed && (nb == wet || nb == solid);
+        }
+      }
+      if (enclosed)
+        for (const auto& [gi, gk] : group) cells(gi, gk) = wet;
+    }
+}
+
+void rigid_face_velocities(const std::vector<core::SolidState>& bodies,
+                           const geometry::CutCells& cut, const Apertures& E,
+                           const grid::Decomposition& d, grid::FaceField& u, grid::FaceField& w,
+                           grid::GridArray<signed char>& u_valid,
+                           grid::GridArray<signed char>& w_valid) {
+  const auto& spec = d.spec();
+  auto rigid = [&](int body, Vec2 x) {
+    if (body < 0) return Vec2{};
+    const auto& st = bodies[static_cast<std::size_t>(body)];
+    return st.v + core::cross(st.omega, x - st.x);
+  };
+  // The body covering either cell beside a face (cells outside the window count as uncovered).
+  auto covering = [&](int i0, int k0, int i1, int k1, bool& any) {
+    const auto& win = cut.window.cells;
+    const bool in0 = win.contains(i0, k0), in1 = win.contains(i1, k1);
+    int body = in0 ? cut.cutting_body(i0, k0) : -1;
+    if (body < 0 && in1) body = cut.cutting_body(i1, k1);
+    any = body >= 0 || (in0 && cut.cutting_obstacle(i0, k0) >= 0) ||
+          (in1 && cut.cutting_obstacle(i1, k1) >= 0);
+    return body;
+  };
+  const auto bu = u.storage();
+  for (int k = bu.k0; k < bu.k1; ++k)
+    for (int i = bu.i0; i < bu.i1; ++i) {
+      if (i <= 0 || i >= spec.nx || k < 0 || k >= spec.nz || E.E_x(i, k) > 0.0) continue;
+      bool any = false;
+      const int body = covering(i - 1, k, i, k, any);
+      if (!any) continue;
+      u(i, k) = rigid(body, spec.position(Stagger::FaceX, i, k)).x;
+      u_valid(i, k) = 1;
+    }
+  const auto bw = w.storage();
+  for (int k = bw.k0; k < bw.k1; ++k)
+    for (int i = bw.i0; i < bw.i1; ++i) {
+      if (k <= 0 || k >= spec.nz || i < 0 || i >= spec.nx || E.E_z(i, k) > 0.0) continue;
+      bool any = false;
+      const int body = covering(i, k - 1, i, k, any);
+      if (!any) continue;
+      w(i, k) = rigid(body, spec.position(Stagger::FaceZ, i, k)).z;
+      w_valid(i, k) = 1;
+    }
+}
+
+void rigid_faces_into_flip_base(const grid::GridSpec& spec, FluidState& f) {
+  const auto bu = f.u.storage(), bw = f.w.storage();
+  for (int k = bu.k0; k < bu.k1; ++k)
+    for (int i = bu.i0; i < bu.i1; ++i)
+      if (i > 0 && i < spec.nx && f.apertures.E_x(i, k) <= 0.0) f.u_old(i, k) = f.u(i, k);
+  for (int k = bw.k0; k < bw.k1; ++k)
+    for (int i = bw.i0; i < bw.i1; ++i)
+      if (k > 0 && k < spec.nz && f.apertures.E_z(i, k) <= 0.0) f.w_old(i, k) = f.w(i, k);
+}
+
+CellStates reseed_cells(const CellStates& cells, const geometry::CutCells& cut) {
+  CellStates out = cells;
+  const auto b = out.storage();
+  for (int k = b.k0; k < b.k1; ++k)
+    for (int i = b.i0; i < b.i1; ++i)
+      if (cut.fluid_fraction(i, k) < 1.0) out(i, k) = static_cast<signed char>(CellState::Solid);
+  return out;
+}
+
+}  // namespace picdem::fluid

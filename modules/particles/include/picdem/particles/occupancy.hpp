@@ -1,0 +1,17 @@
+#pragma once
+// The particles' occupancy of the cells: the bilinear tent of the P2G transfer, scattered from
+// every particle onto the cell centres and counted in full cells' worth of particles. The fluid
+// module reads it as the free surface (picdem/fluid/free_surface.hpp).
+#include "picdem/grid/field.hpp"
+#include "picdem/particles/particle_set.hpp"
+
+namespace picdem::particles {
+
+/// S(x_c) = sum_p W(x_c - x_p) / (n_ppc m(x_c)) over owned + halo cells (reverse-added, then
+/// forwarded): W the bilinear tent of half-width h between cell centres, n_ppc the particles per
+/// full cell, m(x_c) the share of the tent's mass inside the tank (1 away from the walls). S = 1
+/// in the bulk and 1/2 on a flat free surface.
+void occupancy(const ParticleSet& ps, const grid::Decomposition& d, const grid::Halo& halo,
+               int particles_per_cell, grid::CellField& S);
+
+}  // namespace picdem::particles
