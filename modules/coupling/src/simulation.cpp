@@ -233,7 +233,7 @@ void Simulation::step() {
     solve = solve_pressure(L, set, solids, collision, dt, *m.pressure, m.fluid);     // pressure
     project(L, set, dt, m.fluid);                                                    // project
     if (m.dem) m.fluid_loads = advance_solids(m.pressure.get(), fluid, dt, *m.dem);  // solids
-    const SolidScene after = advanced_scene(solids.scene, m.dem.get());  // solids at X^{n+1}
+    const SolidScene after = scene_of(m.dem.get(), m.obstacles);  // solids at X^{n+1}
     grid_to_particles(L, set, solids, after, m.dem.get(), m.fluid, m.particles);    // transfer
     advect_particles(L, set, m.step, solids.cut, after, dt, m.fluid, m.particles);  // advect
   } else if (m.dem) {

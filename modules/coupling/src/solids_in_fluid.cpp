@@ -6,7 +6,6 @@
 #include <limits>
 #include <map>
 #include <tuple>
-#include <unordered_map>
 
 #include "picdem/geometry/outline.hpp"
 
@@ -20,34 +19,27 @@ SolidScene scene_of(const dem::DemSolver* dem, const std::vector<geometry::Obsta
   SolidScene scene;
   scene.obstacles = obstacles;
   if (!dem) return scene;
-  auto add = [&](const core::SolidState& st) {
+  scene.states = dem->owned();
+  const auto ghosts = dem->ghosts();
+  scene.states.insert(scene.states.end(), ghosts.begin(), ghosts.end());
+  std::sort(scene.states.begin(), scene.states.end(),
+            [](const core::SolidState& a, const core::SolidState& b) { return a.id < b.id; });
+  for (const auto& st : scene.states)
     scene.placements.push_back({st.id, dem->shape_of(st.id), {st.x, st.theta}});
-    scene.states.push_back(st);
-  };
-  for (const auto& st : dem->owned()) add(st);
-  for (const auto& st : dem->ghosts()) add(st);
   return scene;
 }
 
-SolidScene advanced_scene(const SolidScene& before, const dem::DemSolver* dem) {
-  if (!dem) return before;
-  const SolidScene now = scene_of(dem, before.obstacles);
-  std::unordered_map<std::int64_t, std::size_t> where;
-  for (std::size_t n = 0; n < now.states.size(); ++n) where.emplace(now.states[n].id, n);
-  SolidScene out;
-  out.obstacles = before.obstacles;
-  out.placements = before.placements;
-  out.states = before.states;
-  std::vector<char> taken(now.states.size(), 0);
-  for (std::size_t b = 0; b < out.states.size(); ++b) {
-    const auto it = where.find(out.states[b].id);
-    if (it == where.end()) continue;
-    out.states[b] = now.states[it->second];
-    out.placements[b] = now.placements[it->second];
-    taken[it->second] = 1;
-  }
-  for (std::size_t n = 0; n < now.states.size(); ++n)
-    if (!taken[n]) out.placements.push_back(now.placements[n]), out.states.push_back(now.states[n]);
+int SolidScene::index_of(std::int64_t id) const {
+  const auto it =
+      std::lower_bound(states.begin(), states.end(), id,
+                       [](const core::SolidState& st, std::int64_t key) { return st.id < key; });
+  return it != states.end() && it->id == id ? static_cast<int>(it - states.begin()) : -1;
+}
+
+std::vector<core::SolidState> motions_at(const SolidScene& before, const SolidScene& after) {
+  std::vector<core::SolidState> out = before.states;
+  for (auto& st : out)
+    if (const int n = after.index_of(st.id); n >= 0) st = after.states[static_cast<std::size_t>(n)];
   return out;
 }
 

@@ -120,15 +120,14 @@ void mark_cells(const Layout& L, const StepSettings& set, const geometry::CutCel
 namespace {
 
 // Faces carrying fluid velocity (open, next to a fluid cell), plus faces closed by a body, which
-// carry its rigid velocity (scene: the solids' velocities); then velocities are extended into the
-// rest. `mask`: recompute the fluid-face mask (else the one of the last call is kept: cells and
-// apertures unchanged since, and the covered faces are the same).
-void extend(const Layout& L, const StepSettings& set, const SolidScene& scene,
+// carry its rigid velocity (motions: of the cut cells' bodies); then velocities are extended into
+// the rest. `mask`: recompute the fluid-face mask (else the one of the last call is kept: cells
+// and apertures unchanged since, and the covered faces are the same).
+void extend(const Layout& L, const StepSettings& set, const std::vector<core::SolidState>& motions,
             const geometry::CutCells& cut, bool mask, fluid::FluidState& f) {
   if (mask) fluid::fluid_faces(f.cells, f.apertures, f.u_valid, f.w_valid);
   if (set.has_bodies)
-    fluid::rigid_face_velocities(scene.states, cut, f.apertures, L.d, f.u, f.w, f.u_valid,
-                                 f.w_valid);
+    fluid::rigid_face_velocities(motions, cut, f.apertures, L.d, f.u, f.w, f.u_valid, f.w_valid);
   fluid::extend_velocity(f.u, f.w, f.u_valid, f.w_valid, L.d.halo(), L.halo);
 }
 
@@ -140,7 +139,7 @@ void particles_to_grid(const Layout& L, const StepSettings& set, const SolidsAtS
   core::ScopedTimer timer("transfer: particles to grid");
   particles::to_grid(particles, L.d, L.halo, set.particles, f.u, f.w, f.weight_u, f.weight_w);
   fluid::enforce_walls(f.u, f.w, set.fluid, L.d);
-  extend(L, set, solids.scene, solids.cut, true, f);
+  extend(L, set, solids.scene.states, solids.cut, true, f);
   f.u_old = f.u, f.w_old = f.w;
 }
 
@@ -202,7 +201,7 @@ void grid_to_particles(const Layout& L, const StepSettings& set, const SolidsAtS
                        const SolidScene& after, const dem::DemSolver* dem, fluid::FluidState& f,
                        particles::ParticleSet& particles) {
   core::ScopedTimer timer("transfer: grid to particles");
-  extend(L, set, after, solids.cut, false, f);
+  extend(L, set, motions_at(solids.scene, after), solids.cut, false, f);
   fluid::enforce_walls(f.u, f.w, set.fluid, L.d);
   if (set.has_bodies) fluid::rigid_faces_into_flip_base(set.spec, f);
   particles::from_grid(particles, set.particles, f.u_old, f.w_old, f.u, f.w, set.spec);

@@ -17,19 +17,23 @@
 
 namespace picdem::coupling {
 
-/// The solids a rank sees (owned + ghosts, each with its shape) and the fixed obstacles.
+/// The solids a rank sees at one instant (owned + ghosts, each with its shape), ordered by id,
+/// and the fixed obstacles: what the fluid reads of the solids, built from the DEM at X^n and
+/// again at X^{n+1}, never changed after. Cut cells built from a scene index its solids (the
+/// body b of a piece is placements[b]); another scene is matched to them by id.
 struct SolidScene {
   std::vector<geometry::SolidPlacement> placements;
   std::vector<core::SolidState> states;  ///< parallel to placements
   std::vector<geometry::Obstacle> obstacles;
+  /// Position of solid `id` in placements and states; -1 when this rank does not see it.
+  int index_of(std::int64_t id) const;
 };
 
 SolidScene scene_of(const dem::DemSolver* dem, const std::vector<geometry::Obstacle>& obstacles);
 
-/// The scene after the DEM has moved the solids: `before`'s solids in the same order (the cut
-/// cells built from `before` index them), with their new states, then solids new to this rank.
-/// A solid no longer seen here keeps its old state.
-SolidScene advanced_scene(const SolidScene& before, const dem::DemSolver* dem);
+/// The states in `after` of the solids of `before`, in before's order (the bodies of cut cells
+/// built from `before`), matched by id; a solid `after` does not hold keeps its state in before.
+std::vector<core::SolidState> motions_at(const SolidScene& before, const SolidScene& after);
 
 /// Cut cells over this rank's storage window; apertures = min(tank apertures, cut-cell E).
 geometry::CutCells cut_cells(const SolidScene& scene, const grid::Decomposition& d,
