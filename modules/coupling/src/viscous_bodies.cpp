@@ -1,23 +1,18 @@
 // The scene's bodies for the implicit viscous operator (viscous_bodies.hpp).
 #include "viscous_bodies.hpp"
 
+#include "picdem/geometry/locator.hpp"
+
 namespace picdem::coupling {
 
 using core::Vec2;
 
 namespace {
 
-/// Even-odd rule over all polygons of an obstacle (its union when they do not overlap).
+/// Inside any of the obstacle's polygons (its union when they do not overlap).
 bool inside_polygons(const std::vector<std::vector<Vec2>>& polygons, const Vec2& p) {
-  for (const auto& poly : polygons) {
-    bool in = false;
-    for (std::size_t a = 0, b = poly.size() - 1; a < poly.size(); b = a++) {
-      const Vec2 &pa = poly[a], &pb = poly[b];
-      if ((pa.z > p.z) != (pb.z > p.z) && p.x < pa.x + (p.z - pa.z) * (pb.x - pa.x) / (pb.z - pa.z))
-        in = !in;
-    }
-    if (in) return true;
-  }
+  for (const auto& poly : polygons)
+    if (geometry::inside_polygon(p, poly)) return true;
   return false;
 }
 

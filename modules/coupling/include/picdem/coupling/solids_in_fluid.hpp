@@ -1,8 +1,8 @@
 #pragma once
 // The fluid-solid part of the coupled step (METHOD.md sections 3, 4 and 6): cut cells at the
 // solids' poses, the solid couplings of the augmented pressure equation (eqs. 5-6), the fluid
-// loads J p, pushing particles out of solids and damping the
-// fluid trapped in contact gaps (eq. 20). Plain functions over plain data.
+// loads J p and damping the fluid trapped in contact gaps (eq. 20). Plain functions over plain
+// data.
 #include <cstdint>
 #include <vector>
 
@@ -12,6 +12,7 @@
 #include "picdem/fluid/fluid.hpp"
 #include "picdem/fluid/pressure_solver.hpp"
 #include "picdem/geometry/cut_cells.hpp"
+#include "picdem/geometry/locator.hpp"
 #include "picdem/grid/field.hpp"
 #include "picdem/particles/particle_set.hpp"
 
@@ -64,27 +65,14 @@ std::vector<fluid::SolidCoupling> solid_couplings(
 std::vector<core::SolidLoads> fluid_loads(const fluid::PressureSolver& pressure,
                                           const grid::CellField& p, const dem::DemSolver& dem);
 
-/// Finds the body holding a point and the nearest point on its boundary.
-class SolidLocator {
+/// The body holding a point and the nearest point on its boundary, over a scene's solids and
+/// obstacles (geometry::BodyLocator; the scene must outlive it).
+class SolidLocator : public geometry::BodyLocator {
  public:
-  explicit SolidLocator(const SolidScene& scene);
-  /// True when p is inside a solid or obstacle; `surface` is then the nearest boundary point
-  /// and `normal` the body's outward normal there.
-  bool inside(core::Vec2 p, core::Vec2* surface = nullptr, core::Vec2* normal = nullptr) const;
-
- private:
-  const SolidScene& scene_;
-  double cell_ = 1.0;
-  core::Vec2 lo_;
-  int nx_ = 0, nz_ = 0;
-  std::vector<std::vector<int>> buckets_;  // solid indices by bucket; obstacles after solids
-  std::vector<core::Box2> boxes_;          // bounding boxes, grown by a margin (a quick reject)
-  std::vector<std::vector<core::Vec2>> obstacle_polys_;
+  explicit SolidLocator(const SolidScene& scene)
+      : geometry::BodyLocator(scene.placements, scene.obstacles) {}
 };
-
-/// Moves a point found inside a body to a tenth of a cell h outside the nearest point of its
-/// surface; a point outside every body stays.
-void push_out(const SolidLocator& locator, double h, double& x, double& z);
+using geometry::push_out;
 
 /// Eq. 20: particles in the band of an active contact (4h along the tangent, centred at the
 /// contact point, h either side of it along the normal) have their velocity scaled by C, linear
