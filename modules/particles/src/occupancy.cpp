@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "stencil.hpp"
+
 namespace picdem::particles {
 
 namespace {
@@ -20,18 +22,14 @@ void occupancy(const ParticleSet& ps, const grid::Decomposition& d, const grid::
                int particles_per_cell, grid::CellField& S) {
   const auto& spec = d.spec();
   S.fill(0.0);
-  const double inv_h = 1.0 / spec.h;
+  const detail::Axes centres = detail::cell_axes(spec);
   for (std::size_t n = 0; n < ps.x.size(); ++n) {
-    // Cell-centred coordinates: centre of cell i at s = i.
-    const double sx = (ps.x[n] - spec.origin.x) * inv_h - 0.5;
-    const double sz = (ps.z[n] - spec.origin.z) * inv_h - 0.5;
-    const int i0 = static_cast<int>(std::floor(sx)), k0 = static_cast<int>(std::floor(sz));
-    const double fx = sx - i0, fz = sz - k0;
+    const detail::Stencil st = detail::unclamped_stencil(centres, {ps.x[n], ps.z[n]});
     // W = (1 - |dx|)(1 - |dz|) on the four surrounding centres
-    const double wx[2] = {1.0 - fx, fx}, wz[2] = {1.0 - fz, fz};
+    const double wx[2] = {1.0 - st.fx, st.fx}, wz[2] = {1.0 - st.fz, st.fz};
     for (int b = 0; b < 2; ++b)
       for (int a = 0; a < 2; ++a)
-        if (S.in_storage(i0 + a, k0 + b)) S(i0 + a, k0 + b) += wx[a] * wz[b];
+        if (S.in_storage(st.i + a, st.k + b)) S(st.i + a, st.k + b) += wx[a] * wz[b];
   }
   halo.reverse_add(S);
   const auto own = d.owned_cells();

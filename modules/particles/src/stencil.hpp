@@ -66,6 +66,29 @@ inline Stencil stencil(const grid::GridSpec& spec, grid::Stagger s, core::Vec2 p
   return stencil(axes(spec, s), p);
 }
 
+/// The samples at the cell centres (centre of cell (i, k) at (x0 + (i + 1/2) h, z0 + (k + 1/2) h)).
+inline Axes cell_axes(const grid::GridSpec& spec) {
+  Axes a;
+  a.inv_h = 1.0 / spec.h;
+  a.x0 = spec.origin.x * a.inv_h + 0.5;
+  a.z0 = spec.origin.z * a.inv_h + 0.5;
+  a.ni = spec.nx, a.nk = spec.nz;
+  return a;
+}
+
+/// The stencil of p with its base not clamped to the grid: near a wall it starts on a sample
+/// outside the tank and the fractions stay in [0, 1) (the occupancy cuts its tent at the walls
+/// instead of extrapolating).
+inline Stencil unclamped_stencil(const Axes& a, core::Vec2 p) {
+  const double sx = p.x * a.inv_h - a.x0, sz = p.z * a.inv_h - a.z0;
+  Stencil st;
+  st.i = floor_int(sx);
+  st.k = floor_int(sz);
+  st.fx = sx - st.i;
+  st.fz = sz - st.k;
+  return st;
+}
+
 /// Throws when the stencil reaches outside the field's storage (the particle left the halo).
 inline void check_in_storage(const grid::FaceField& f, const Stencil& st, core::Vec2 p) {
   const core::IndexBox& b = f.storage();
