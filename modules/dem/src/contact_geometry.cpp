@@ -110,7 +110,47 @@ ClosestPoints segment_segment(const Segment& s, const Segment& t) {
   return best;
 }
 
+// The first point (along s) where segment s crosses arc a: |s.a + t r - c| = R for t in [0, 1],
+// on the arc's span.
+bool segment_crosses_arc(const Segment& s, const Arc& a, Vec2& where) {
+  const Vec2 r = s.b - s.a, f = s.a - a.centre;
+  const double A = core::norm2(r), B = core::dot(r, f), C = core::norm2(f) - a.radius * a.radius;
+  const double disc = B * B - A * C;
+  if (!(A > 0.0) || disc < 0.0) return false;
+  const double root = std::sqrt(disc);
+  for (double t : {(-B - root) / A, (-B + root) / A}) {
+    if (t < 0.0 || t > 1.0) continue;
+    const Vec2 x = s.a + t * r;
+    if (in_arc(a, x - a.centre)) {
+      where = x;
+      return true;
+    }
+  }
+  return false;
+}
+
+// A point where arcs a and b cross: the intersections of their circles, on both spans.
+bool arcs_cross(const Arc& a, const Arc& b, Vec2& where) {
+  const Vec2 c = b.centre - a.centre;
+  const double d = length(c);
+  if (!(d > 0.0) || d > a.radius + b.radius || d < std::abs(a.radius - b.radius)) return false;
+  // along the line of centres from a's centre, then +- h across it
+  const double along = (a.radius * a.radius - b.radius * b.radius + d * d) / (2.0 * d);
+  const double h = std::sqrt(std::max(0.0, a.radius * a.radius - along * along));
+  const Vec2 u = c / d;
+  for (double side : {1.0, -1.0}) {
+    const Vec2 x = a.centre + along * u + side * h * core::perp(u);
+    if (in_arc(a, x - a.centre) && in_arc(b, x - b.centre)) {
+      where = x;
+      return true;
+    }
+  }
+  return false;
+}
+
 ClosestPoints segment_arc(const Segment& s, const Arc& a) {
+  Vec2 x;
+  if (segment_crosses_arc(s, a, x)) return make(x, x);
   // Interior critical point: the connecting line is normal to the segment and radial to the arc,
   // so it passes through the arc centre.
   const Vec2 foot = closest_on_segment(s, a.centre);
@@ -123,6 +163,8 @@ ClosestPoints segment_arc(const Segment& s, const Arc& a) {
 }
 
 ClosestPoints arc_arc(const Arc& a, const Arc& b) {
+  Vec2 x;
+  if (arcs_cross(a, b, x)) return make(x, x);
   const Vec2 c = b.centre - a.centre;
   const double d = length(c);
   ClosestPoints best;

@@ -77,6 +77,31 @@ TEST(ContactGeometry, SegmentArcInteriorAndEndpoint) {
   EXPECT_NEAR(q.distance, 2.0, 1e-15);
 }
 
+// Real boundaries that cross (an overlap beyond the gap) give distance 0 at a crossing point, as
+// two crossing segments do, and not the distance of a neighbouring critical point.
+TEST(ContactGeometry, ArcCrossingsGiveDistanceZero) {
+  // the line z = 0.6 for x in [-2, 0] crosses the unit circle at (-0.8, 0.6): on the upper half
+  const Segment s{{-2.0, 0.6}, {0.0, 0.6}};
+  const ClosestPoints x = closest_points(s, Arc{{0.0, 0.0}, 1.0, 0.0, pi});
+  EXPECT_EQ(x.distance, 0.0);
+  EXPECT_NEAR(x.on_a.x, -0.8, 1e-15);
+  EXPECT_NEAR(x.on_a.z, 0.6, 1e-15);
+  EXPECT_EQ(x.on_a.x, x.on_b.x);
+  // the lower half is not crossed: its end (-1, 0) is 0.6 below the segment
+  const ClosestPoints below = closest_points(s, Arc{{0.0, 0.0}, 1.0, pi, 2 * pi});
+  EXPECT_NEAR(below.distance, 0.6, 1e-15);
+  // unit circles centred 1.2 apart cross at (0.6, +-0.8): the upper halves at (0.6, 0.8) ...
+  const Arc a{{0.0, 0.0}, 1.0, 0.0, pi};
+  const ClosestPoints y = closest_points(a, Arc{{1.2, 0.0}, 1.0, 0.0, pi});
+  EXPECT_EQ(y.distance, 0.0);
+  EXPECT_NEAR(y.on_a.x, 0.6, 1e-15);
+  EXPECT_NEAR(y.on_a.z, 0.8, 1e-15);
+  // ... while the upper half of one and the lower half of the other do not meet: 0.8 apart on
+  // the line of centres, (1, 0) and (0.2, 0)
+  const ClosestPoints apart = closest_points(a, Arc{{1.2, 0.0}, 1.0, pi, 2 * pi});
+  EXPECT_NEAR(apart.distance, 0.8, 1e-14);
+}
+
 TEST(ContactGeometry, SupportPointAndCircleFastPath) {
   const geometry::Circle c(0.25);
   EXPECT_EQ(c.fast_paths().centred_circle_radius, 0.25);
