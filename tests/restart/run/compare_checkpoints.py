@@ -2,14 +2,14 @@
 """Compares two picdem checkpoints (layout in doc/restart.md).
 
 usage: compare_checkpoints.py A.h5 B.h5 bitwise
-       compare_checkpoints.py A.h5 B.h5 close RTOL ATOL_POSITION
+       compare_checkpoints.py A.h5 B.h5 close RTOL ATOL_POSITION [ATOL_VELOCITY]
 
 bitwise: both files were written on the same number of ranks; every dataset and every attribute
 must be identical bit for bit.
 close:   the files may come from different rank counts; particles are matched by id (the same set
 of ids is required), grid fields are put together from every rank's owned box, solids by id.
-Positions and velocities must agree within ATOL_POSITION (m, m/s), pressure within RTOL relative
-to its largest magnitude. Prints the largest differences; exit code 1 on failure.
+Positions and velocities must agree within ATOL_POSITION (m, m/s; velocities within ATOL_VELOCITY
+when given), pressure within RTOL relative to its largest magnitude. Prints the largest differences; exit code 1 on failure.
 """
 import sys
 
@@ -65,7 +65,8 @@ def global_field(f, name, which):
     return out
 
 
-def close(a, b, rtol, atol):
+def close(a, b, rtol, atol, atol_v=None):
+    atol_v = atol if atol_v is None else atol_v
     ok = True
     for key in ["t", "step", "format_version"]:
         if a.attrs[key] != b.attrs[key]:
@@ -77,9 +78,10 @@ def close(a, b, rtol, atol):
         print(f"the particle ids differ ({len(ia)} vs {len(ib)} particles)")
         return False
     for q in ["x", "z", "u", "w"]:
+        tol = atol if q in "xz" else atol_v
         d = np.max(np.abs(a["particles/" + q][()][oa] - b["particles/" + q][()][ob]), initial=0)
-        print(f"particles/{q}: max |diff| = {d:.3e} (allowed {atol:.1e})")
-        ok = ok and d <= atol
+        print(f"particles/{q}: max |diff| = {d:.3e} (allowed {tol:.1e})")
+        ok = ok and d <= tol
     if a.attrs["has_fluid"]:
         pa, pb = global_field(a, "grid/p", 2), global_field(b, "grid/p", 2)
         scale = max(np.nanmax(np.abs(pa)), 1e-300)
@@ -89,16 +91,17 @@ def close(a, b, rtol, atol):
         for q, which in [("u", 0), ("w", 1)]:
             d = np.nanmax(np.abs(global_field(a, "grid/" + q, which) -
                                  global_field(b, "grid/" + q, which)))
-            print(f"grid/{q}: max |diff| = {d:.3e} (allowed {atol:.1e})")
-            ok = ok and d <= atol
+            print(f"grid/{q}: max |diff| = {d:.3e} (allowed {atol_v:.1e})")
+            ok = ok and d <= atol_v
     sa, sb = a["dem/id"][()], b["dem/id"][()]
     if not np.array_equal(sa, sb):
         print("the solid ids differ")
         return False
     for q in ["x", "z", "theta", "u", "w", "omega"]:
+        tol = atol if q in ["x", "z", "theta"] else atol_v
         d = np.max(np.abs(a["dem/" + q][()] - b["dem/" + q][()]), initial=0)
-        print(f"dem/{q}: max |diff| = {d:.3e} (allowed {atol:.1e})")
-        ok = ok and d <= atol
+        print(f"dem/{q}: max |diff| = {d:.3e} (allowed {tol:.1e})")
+        ok = ok and d <= tol
     print("close" if ok else "NOT CLOSE")
     return ok
 
@@ -110,7 +113,8 @@ def main():
     with h5py.File(sys.argv[1], "r") as a, h5py.File(sys.argv[2], "r") as b:
         if sys.argv[3] == "bitwise":
             return 0 if bitwise(a, b) else 1
-        return 0 if close(a, b, float(sys.argv[4]), float(sys.argv[5])) else 1
+        atol_v = float(sys.argv[6]) if len(sys.argv) > 6 else None
+        return 0 if close(a, b, float(sys.argv[4]), float(sys.argv[5]), atol_v) else 1
 
 
 if __name__ == "__main__":

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Restart tests of the picdem executable (doc/restart.md). Each test runs in its own folder.
 # usage: restart_tests.sh PICDEM SOURCE_DIR WORK_DIR PYTHON TEST [TEST ARGS] -- MPIEXEC...
-#   TEST: bitwise N CASE | ranks N M | kill_during_write | sigterm | sigusr1 | bad_files | blow_up
+#   TEST: bitwise N CASE | ranks N M | ranks_straddling N M | kill_during_write | sigterm | sigusr1 | bad_files | blow_up
 #         | schedule | layout | extend
 set -u
 picdem=$1 src=$2 work=$3 python=$4 test=$5
@@ -76,6 +76,38 @@ ranks)
   expect_ok $? "$W/B"
   # positions/velocities within 1e-5 (m, m/s), pressure within 1e-5 of its largest value
   $cmp "$(ck "$W/A" 40)" "$(ck "$W/B" 40)" close 1e-5 1e-5 || fail "$n -> $m ranks: not close"
+  ;;
+ranks_straddling)
+  # N -> M with solids across the rank boundaries, at the default solver tolerance: the
+  # checkpoint of step 20 (written on N ranks) continued on M ranks and, from the same file, on N
+  # ranks to step 40; positions (particles and solids, and the solids' angles) agree within 1e-7
+  # m, velocities within 1e-5 m/s and pressure within 1e-5 of its largest value (the solver
+  # tolerance's reach, as the other N -> M tests).
+  # Checked in the checkpoints: solids straddle a boundary of the N-rank and of the M-rank cut
+  # (of each that has more than 1 rank).
+  n=${targs[0]} m=${targs[1]}
+  straddle=(tests/restart/run/disks_straddling.yaml --set checkpoint/every_steps=20
+            --set checkpoint/keep=5)
+  run "$n" "$W/A" "${straddle[@]}" --max-steps 20; expect_ok $? "$W/A"
+  run "$m" "$W/B" "${straddle[@]}" --max-steps 40 --restart "$(ck "$W/A" 20)"; expect_ok $? "$W/B"
+  run "$n" "$W/C" "${straddle[@]}" --max-steps 40 --restart "$(ck "$W/A" 20)"; expect_ok $? "$W/C"
+  for f in "$(ck "$W/A" 20)" "$(ck "$W/B" 40)"; do
+    $python - "$f" << 'EOF' || fail "no solid straddles a rank boundary in $f"
+import sys, h5py
+with h5py.File(sys.argv[1], "r") as f:
+    boxes = f["grid/boxes"][()].reshape(-1, 24)  # per rank: 3 staggers x (storage, owned) x 4
+    h, nx = 0.002, 60  # the case's cell size and cells along x
+    cuts = sorted({int(b[21]) for b in boxes if b[21] != nx})  # owned cells' upper x index
+    radius = {0: 0.006, 1: 0.006, 2: 0.005, 3: 0.005}  # the case's disks, by id
+    n = sum(1 for i, x in zip(f["dem/id"][()], f["dem/x"][()])
+            if any(abs(x - c * h) < radius[int(i)] for c in cuts))
+    print(f"{sys.argv[1]}: {len(boxes)} ranks, cuts at x = {[c * h for c in cuts]} m, "
+          f"{n} solid(s) across them")
+    sys.exit(0 if n > 0 or len(boxes) == 1 else 1)  # 1 rank: no boundary to straddle
+EOF
+  done
+  $cmp "$(ck "$W/C" 40)" "$(ck "$W/B" 40)" close 1e-5 1e-7 1e-5 ||
+    fail "$n -> $m ranks with straddling solids: not within 1e-7 of the $n-rank restart"
   ;;
 layout)
   # The same 2 ranks in another layout (2 x 1 blocks -> 1 x 2): the checkpoint is read as on
