@@ -26,6 +26,7 @@ double submerged_segment_area(double r, double centre_above_level) {
 TEST(Archimedes, FloatingBoxSettlesAtItsDraft) {
   core::Comm comm;
   const auto params = test_support::load_case(comm, "cases/floating_box/case.yaml");
+  test_support::print_resolution(comm, "Archimedes.FloatingBoxSettlesAtItsDraft", params);
   coupling::Simulation sim(comm, params, "");
   const double h = params.real("grid/cell_size"), H = 0.02, W = 0.04, expected = 0.5 * H;
   const double length = params.real("grid/length"), t_end = params.real("time/end");
@@ -68,6 +69,7 @@ TEST(Archimedes, FloatingBoxSettlesAtItsDraft) {
 TEST(Archimedes, FloatingDiskHalfSubmerged) {
   core::Comm comm;
   const auto params = test_support::load_case(comm, "cases/floating_disk/case.yaml");
+  test_support::print_resolution(comm, "Archimedes.FloatingDiskHalfSubmerged", params);
   coupling::Simulation sim(comm, params, "");
   const double r = 0.01, t_end = params.real("time/end");
   double sum = 0.0;
@@ -86,18 +88,31 @@ TEST(Archimedes, FloatingDiskHalfSubmerged) {
   EXPECT_NEAR(sum / n / expected, 1.0, 0.02);
 }
 
+// The disk's largest distance from the start over every step of the run, not only at the end,
+// stays below a tenth of a cell. (With the default jittered seeding the excursion passes too,
+// 8.1e-6 m, but the torque check below does not: 1.85e-9 N m/m; doc/validation.md.)
 TEST(Archimedes, NeutralDiskStaysPutAndLoadMatchesPressureIntegral) {
   core::Comm comm;
   const auto params = test_support::load_case(comm, "cases/neutral_disk/case.yaml");
+  test_support::print_resolution(
+      comm, "Archimedes.NeutralDiskStaysPutAndLoadMatchesPressureIntegral", params);
   coupling::Simulation sim(comm, params, "");
   const auto start = sim.dem()->gather_all().at(0);
-  sim.run();
+  const double t_end = params.real("time/end");
+  double excursion = 0.0;
+  while (sim.time() < t_end - 1e-12) {
+    sim.step();
+    excursion = std::max(excursion, core::norm(sim.dem()->gather_all().at(0).x - start.x));
+  }
   const auto end = sim.dem()->gather_all().at(0);
   const double h = params.real("grid/cell_size"), r = 0.01, rho = 1000.0, g = 9.81;
   const double drift = core::norm(end.x - start.x);
   if (comm.is_root())
-    std::printf("neutral disk: drift %.3e m in 1 s (%.3f cells)\n", drift, drift / h);
-  EXPECT_LT(drift, 0.1 * h);
+    std::printf(
+        "neutral disk (h = %.4g m, %.0f cells per diameter, jitter %.2f): largest excursion "
+        "%.3e m (%.4f cells), drift at t = %.2f s %.3e m\n",
+        h, 2 * r / h, params.real("particles/jitter"), excursion, excursion / h, sim.time(), drift);
+  EXPECT_LT(excursion, 0.1 * h);
 
   // J p against an independent quadrature of -int p n dl: 720 points on the circle, p from the
   // fluid cell just outside each point, corrected hydrostatically to the point.
@@ -127,6 +142,7 @@ TEST(Archimedes, NeutralDiskStaysPutAndLoadMatchesPressureIntegral) {
 TEST(FixedObstacle, StillWaterStaysStillAndHydrostatic) {
   core::Comm comm;
   const auto params = test_support::load_case(comm, "cases/still_tank_obstacle/case.yaml");
+  test_support::print_resolution(comm, "FixedObstacle.StillWaterStaysStillAndHydrostatic", params);
   coupling::Simulation sim(comm, params, "");
   sim.run();
   const double rho = 1000.0, g = 9.81, level = 0.1, h = params.real("grid/cell_size");

@@ -33,6 +33,8 @@ Outcome run(int layers, double beta) {
       comm, "cases/dam_break_cylinders_" + std::to_string(layers) + "_layers/case.yaml",
       {"grid/cell_size=" + std::to_string(h), "coupling/beta=" + std::to_string(beta),
        "time/dt_max=0.001"});
+  test_support::print_resolution(comm, "DamBreakCylinders " + std::to_string(layers) + " layers",
+                                 params);
   coupling::Simulation sim(comm, params, "");
   const double L = params.real("grid/length"), r = 0.005, gap = 2 * h;
   Outcome o;

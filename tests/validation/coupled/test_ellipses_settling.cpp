@@ -35,6 +35,8 @@ double submerged_area(double a, double b, double theta, double above) {
 TEST(EllipsesSettling, HeavyOnesComeToRestAndTheLightOneFloatsHalfSubmerged) {
   core::Comm comm;
   const auto params = test_support::load_case(comm, "cases/ellipses_settling/case.yaml");
+  test_support::print_resolution(
+      comm, "EllipsesSettling.HeavyOnesComeToRestAndTheLightOneFloatsHalfSubmerged", params);
   coupling::Simulation sim(comm, params, "");
   const double h = params.real("grid/cell_size"), gap = params.real("dem/gap_cells") * h;
   const double t_end = params.real("time/end"), length = params.real("grid/length");

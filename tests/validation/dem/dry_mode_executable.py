@@ -16,6 +16,7 @@ usage: dry_mode_executable.py PICDEM SOURCE_DIR WORK_DIR MPIEXEC...
 """
 import csv
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -78,6 +79,12 @@ def main():
     four = run(picdem, case, os.path.join(work, "np4"), 4, mpiexec,
                ["--set", "grid/ranks_x=4", "--set", "grid/ranks_z=1"])
     failures = []
+    with open(os.path.join(os.path.dirname(one), "case_resolved.yaml")) as f:
+        ran_h = float(re.search(r"^\s*cell_size:\s*([0-9.eE+-]+)", f.read(), re.M).group(1))
+    print(f"dry mode through the executable: resolution h = {ran_h} m (case_resolved.yaml), "
+          f"1 rank and 4 ranks")
+    if abs(ran_h - h) > 1e-15:
+        failures.append(f"ran at h = {ran_h} m, the test's figures assume {h} m")
 
     frames = read_solids(one)
     times = sorted(frames)

@@ -69,8 +69,10 @@ TEST_P(DryCollapse, MeanCentreFollowsTheExperiment) {
   });
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("dry collapse (%s): %zu outputs, %d subcycles per step of %g s, %.2f s wall clock\n",
-              model.c_str(), sim.size(), subcycles, c.dt, seconds);
+  std::printf(
+      "dry collapse (%s): resolution h = %g m (gap %g m), %zu outputs, %d subcycles per step of %g "
+      "s, %.2f s wall clock\n",
+      model.c_str(), c.cfg.h, c.cfg.gap(), sim.size(), subcycles, c.dt, seconds);
 
   std::ofstream curve("dem_dry_collapse_" + model + ".csv");
   curve << "t_s,xc_over_L,zc_over_L\n";

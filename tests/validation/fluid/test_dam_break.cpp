@@ -41,6 +41,7 @@ TEST(DamBreak, SurgeFrontAgainstMartinMoyce) {
   const double a = 0.05715, g = 9.81;
   const double tau_scale = std::sqrt(2.0 * g / a);
   const auto params = test_support::load_case(comm, "cases/dam_break/case.yaml", {"time/end=0.19"});
+  test_support::print_resolution(comm, "DamBreak.SurgeFrontAgainstMartinMoyce", params);
   ASSERT_GE(a / params.real("grid/cell_size"), 20.0 - 1e-9);
   coupling::Simulation sim(comm, params, "");
   std::vector<double> tau{0.0}, front{1.0};

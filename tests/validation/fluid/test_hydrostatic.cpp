@@ -13,6 +13,8 @@ using namespace picdem;
 TEST(Hydrostatic, PressureAndSpuriousCurrentsAfterOneSecond) {
   core::Comm comm;
   const auto params = test_support::load_case(comm, "cases/hydrostatic_tank/case.yaml");
+  test_support::print_resolution(comm, "Hydrostatic.PressureAndSpuriousCurrentsAfterOneSecond",
+                                 params);
   coupling::Simulation sim(comm, params, "");
   sim.run();
   ASSERT_NEAR(sim.time(), 1.0, 1e-12);
