@@ -30,6 +30,7 @@ TEST(MomentumBalance, SinkingDiskInClosedTank) {
   const auto params = test_support::load_case(
       comm, "cases/neutral_disk/case.yaml",
       {"solids/disk/density=2000", "solids/disk/center=[0.07, 0.05]", "time/end=0.1"});
+  test_support::print_resolution(comm, "MomentumBalance.SinkingDiskInClosedTank", params);
   coupling::Simulation sim(comm, params, "");
   const double h = params.real("grid/cell_size"), rho = 1000.0;
   const core::Vec2 g{0.0, -9.81};
