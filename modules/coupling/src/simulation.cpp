@@ -150,7 +150,8 @@ Simulation::Simulation(core::Comm comm, core::Params params, std::string output_
           "sees only its solids; doc/viscous.md)");
     m.pressure = std::make_unique<fluid::PressureSolver>(d, params);
     if (m.set.density_relaxation > 0.0)
-      m.density_solver = std::make_unique<fluid::PressureSolver>(d, params);
+      m.density_solver = std::make_unique<fluid::PressureSolver>(
+          d, params, fluid::PressureSolver::Equation::DensityCorrection);
     m.fluid = fluid::FluidState(d);
     m.particles = seed_water(m);
   }

@@ -88,6 +88,15 @@ void declare_parameters(core::ParamSchema& schema) {
                      "solved on several ranks: it is then its own coarsest level, which no "
                      "repartitioning gathers on one rank, and MueLu's distributed direct coarse "
                      "solve is wrong there (TOOLCHAIN.md)");
+  schema
+      .real("solver/density_tolerance", 1e-4,
+            "relative true residual ||b - A q|| / ||b|| of the density correction's solve "
+            "(free_surface/density_correction; doc/coupling.md)")
+      .positive()
+      .less_than(1.0);
+  schema.passthrough("solver/MueLu_density", "\"multigrid algorithm\": sa\n",
+                     "merged over solver/MueLu for the density correction's solve "
+                     "(doc/coupling.md)");
 }
 
 FluidConfig config_from(const core::Params& params) {

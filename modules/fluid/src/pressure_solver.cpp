@@ -43,7 +43,7 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 /// solver/MueLu, and the lists merged over MueLu's for systems with solids and for systems
 /// solved on one level on several ranks (fluid::declare_parameters declares all four).
 struct SolverSettings {
-  double tolerance = 1e-8;
+  double tolerance = 1e-8;  // solver/tolerance, or solver/density_tolerance
   int max_iterations = 500;
   bool rebalance = true;
   Teuchos::ParameterList belos, muelu, muelu_solids, muelu_one_level;
@@ -85,7 +85,8 @@ void validate(const SolverSettings& s) {
   const std::vector<std::pair<const char*, Teuchos::ParameterList>> lists = {
       {"solver/MueLu", merged(s.muelu, nullptr)},
       {"solver/MueLu_solids", merged(s.muelu, &s.muelu_solids)},
-      {"solver/MueLu_one_level", merged(s.muelu, &s.muelu_one_level)}};
+      {"solver/MueLu_one_level", merged(s.muelu, &s.muelu_one_level)},
+      {"solver/MueLu_density", s.muelu}};
   for (const auto& [key, list] : lists) {
     Teuchos::ParameterList top = list;
     std::vector<std::string> levels;  // MueLu's "level N" sublists: not in the master list
@@ -115,15 +116,23 @@ void validate(const SolverSettings& s) {
   }
 }
 
-SolverSettings settings_from(const core::Params& params) {
+/// The settings of the pressure solve, or of the density correction's solve: its own tolerance
+/// and solver/MueLu_density merged over solver/MueLu.
+SolverSettings settings_from(const core::Params& params,
+                             PressureSolver::Equation eq = PressureSolver::Equation::Pressure) {
+  const bool density = eq == PressureSolver::Equation::DensityCorrection;
   SolverSettings s;
-  s.tolerance = params.real("solver/tolerance");
+  s.tolerance = params.real(density ? "solver/density_tolerance" : "solver/tolerance");
   s.max_iterations = static_cast<int>(params.integer("solver/max_iterations"));
   s.rebalance = params.boolean("solver/rebalance");
   s.belos = params.teuchos("solver/Belos");
   s.muelu = params.teuchos("solver/MueLu");
   s.muelu_solids = params.teuchos("solver/MueLu_solids");
   s.muelu_one_level = params.teuchos("solver/MueLu_one_level");
+  if (density) {
+    const Teuchos::ParameterList over = params.teuchos("solver/MueLu_density");
+    s.muelu = merged(s.muelu, &over);
+  }
   validate(s);
   return s;
 }
@@ -246,6 +255,7 @@ SolveStats solve_rows(detail::TpetraSystem& ts, const grid::Decomposition& d,
 
 void check_solver_settings(const core::Params& params) {
   settings_from(params);
+  settings_from(params, PressureSolver::Equation::DensityCorrection);
 }
 
 struct PressureSolver::Impl {
@@ -257,8 +267,11 @@ struct PressureSolver::Impl {
   grid::GridArray<int> row_of;
   detail::TpetraSystem system;
   Interpreters interpreters;
-  Impl(const grid::Decomposition& dec, const core::Params& params)
-      : d(dec), halo(dec), settings(settings_from(params)), row_of(dec, grid::Stagger::Cell, -1) {}
+  Impl(const grid::Decomposition& dec, const core::Params& params, Equation eq)
+      : d(dec),
+        halo(dec),
+        settings(settings_from(params, eq)),
+        row_of(dec, grid::Stagger::Cell, -1) {}
 
   /// The fluid rows (-L_E, -D + source), then the coupling term's part.
   void assemble(const CellStates& cells, const Apertures& E, const grid::FaceField& u,
@@ -271,8 +284,9 @@ struct PressureSolver::Impl {
   }
 };
 
-PressureSolver::PressureSolver(const grid::Decomposition& d, const core::Params& params)
-    : impl_(std::make_unique<Impl>(d, params)) {}
+PressureSolver::PressureSolver(const grid::Decomposition& d, const core::Params& params,
+                               Equation eq)
+    : impl_(std::make_unique<Impl>(d, params, eq)) {}
 PressureSolver::~PressureSolver() = default;
 
 AssembledSystem PressureSolver::assemble(const CellStates& cells, const Apertures& E,

@@ -58,8 +58,14 @@ struct AssembledSystem {
 
 class PressureSolver {
  public:
+  /// What the solver solves: the pressure equation, or the density correction's Poisson
+  /// equation (same operator; solver/density_tolerance instead of solver/tolerance and
+  /// solver/MueLu_density merged over solver/MueLu).
+  enum class Equation { Pressure, DensityCorrection };
+
   /// Reads solver/tolerance, solver/max_iterations, solver/Belos and solver/MueLu.
-  PressureSolver(const grid::Decomposition& d, const core::Params& params);
+  PressureSolver(const grid::Decomposition& d, const core::Params& params,
+                 Equation eq = Equation::Pressure);
   ~PressureSolver();
   PressureSolver(const PressureSolver&) = delete;
   PressureSolver& operator=(const PressureSolver&) = delete;
