@@ -346,6 +346,21 @@ CheckpointHeader read_checkpoint(const CheckpointParts& parts, const std::string
   return head;
 }
 
+std::vector<core::IndexBox> checkpoint_cell_boxes(const core::Comm& comm, const std::string& path) {
+  std::vector<int> boxes;
+  try {  // a bad file: read_checkpoint then names what is wrong with it
+    const io::CheckpointReader in(comm, path);
+    on_all_ranks(comm,
+                 [&] { boxes = in.read_range_int("grid/boxes", 0, in.length("grid/boxes")); });
+  } catch (const core::InputError&) {
+    return {};
+  }
+  std::vector<core::IndexBox> out;
+  // per rank: FaceX, FaceZ, Cell, each as storage box then owned box
+  for (std::size_t at = 0; at + 24 <= boxes.size(); at += 24) out.push_back(box_at(boxes, at + 20));
+  return out;
+}
+
 void check_step(const Diagnostics& g, double h, bool has_fluid, const dem::DemSolver* dem,
                 const core::Comm& comm) {
   // CFL far exceeded: |v| dt > 2 h for the fastest particle.

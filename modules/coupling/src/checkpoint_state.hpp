@@ -4,6 +4,7 @@
 // dem::DemSolver::Snapshot::for_each); this file only names the groups, writes them and puts
 // them back, on the same or another rank layout. Private to the coupling module.
 #include <string>
+#include <vector>
 
 #include "picdem/core/comm.hpp"
 #include "picdem/core/params.hpp"
@@ -45,6 +46,10 @@ void write_checkpoint(const CheckpointParts& parts, const CheckpointHeader& head
 /// returns its header. Throws core::InputError for a missing, truncated, corrupted or mismatched
 /// file (format version, case).
 CheckpointHeader read_checkpoint(const CheckpointParts& parts, const std::string& path);
+
+/// Collective: the owned cell box of every rank that wrote the checkpoint `path` (rank order;
+/// empty without water, or when the file cannot be read).
+std::vector<core::IndexBox> checkpoint_cell_boxes(const core::Comm& comm, const std::string& path);
 
 /// Collective, after every step (g: its diagnostics): throws core::SolverError naming the step
 /// when the step blew up: a particle moved more than 2 h (CFL far exceeded), or a solid's real

@@ -1,6 +1,7 @@
 #include "picdem/coupling/simulation.hpp"
 
 #include "checkpoint_state.hpp"
+#include "rebalance.hpp"
 #include "step_phases.hpp"
 
 #include <algorithm>
@@ -45,17 +46,6 @@ bool inside_water(const core::Params& params, const Vec2& c) {
   return false;
 }
 
-std::vector<core::Box2> rank_regions(const grid::Decomposition& d) {
-  std::vector<core::Box2> out;
-  const auto& s = d.spec();
-  for (int r = 0; r < d.size(); ++r) {
-    const auto b = d.owned_cells(r);
-    out.push_back({{s.origin.x + b.i0 * s.h, s.origin.z + b.k0 * s.h},
-                   {s.origin.x + b.i1 * s.h, s.origin.z + b.k1 * s.h}});
-  }
-  return out;
-}
-
 }  // namespace
 
 // The modules and the run's records; the step's phases (step_phases.hpp) get what each needs.
@@ -87,6 +77,7 @@ struct Simulation::Impl {
   bool stopped_by_signal = false;
 
   Layout layout() const { return {*decomp, *halo, comm}; }
+  bool weighted() const { return params.string("grid/decomposition") == "weighted"; }
 };
 
 namespace {
@@ -111,6 +102,39 @@ particles::ParticleSet seed_water(const Simulation::Impl& m) {
   }
   ps.keep_if(keep);
   return ps;
+}
+
+// Moves the state to `cuts` and rebuilds the pressure solvers on the new blocks.
+void adopt_cuts(Simulation::Impl& m, const grid::Cuts& cuts) {
+  move_to_cuts({*m.decomp, m.halo, m.set.has_fluid ? &m.fluid : nullptr, m.particles, m.dem.get()},
+               cuts);
+  if (m.pressure) m.pressure = std::make_unique<fluid::PressureSolver>(*m.decomp, m.params);
+  if (m.density_solver)
+    m.density_solver = std::make_unique<fluid::PressureSolver>(*m.decomp, m.params);
+}
+
+// grid/decomposition = weighted: cut lines balancing the particles' work (rebalance.hpp), taken
+// when they lighten the heaviest block by grid/rebalance_gain or more. A function of the particles
+// and the present cuts only, both of which a checkpoint keeps.
+void rebalance(Simulation::Impl& m) {
+  if (!m.weighted() || m.comm.size() == 1 || !m.set.has_fluid) return;
+  const auto work = cell_work(*m.decomp, m.particles);
+  const auto cuts =
+      grid::balanced_cuts(*m.decomp, work, static_cast<int>(m.params.integer("grid/ranks_x")),
+                          static_cast<int>(m.params.integer("grid/ranks_z")));
+  if (cuts.xs == m.decomp->x_cuts() && cuts.zs == m.decomp->z_cuts()) return;
+  const long long before = grid::heaviest_block(*m.decomp, work);
+  const double gain = m.params.real("grid/rebalance_gain");
+  if (static_cast<double>(cuts.heaviest) > (1.0 - gain) * static_cast<double>(before)) return;
+  adopt_cuts(m, cuts);
+  auto list = [](const std::vector<int>& v) {
+    std::string out;
+    for (int c : v) out += (out.empty() ? "" : " ") + std::to_string(c);
+    return out;
+  };
+  core::log(m.comm, "picdem: step " + std::to_string(m.step) + ": cut lines x {" + list(cuts.xs) +
+                        "}, z {" + list(cuts.zs) + "}, heaviest block " + std::to_string(before) +
+                        " -> " + std::to_string(cuts.heaviest));
 }
 
 }  // namespace
@@ -154,6 +178,7 @@ Simulation::Simulation(core::Comm comm, core::Params params, std::string output_
           d, params, fluid::PressureSolver::Equation::DensityCorrection);
     m.fluid = fluid::FluidState(d);
     m.particles = seed_water(m);
+    rebalance(m);
   }
   if (!output_dir.empty()) m.output = std::make_unique<Output>(comm, params, d, output_dir);
 }
@@ -216,8 +241,10 @@ const core::Params& Simulation::params() const {
 // The step in the order of the paper's Fig. 4: each phase's inputs and outputs are named here.
 void Simulation::step() {
   Impl& m = *m_;
-  const Layout L = m.layout();
   const StepSettings& set = m.set;
+  const long long every = m.params.integer("grid/rebalance_interval");
+  if (every > 0 && m.step > 0 && m.step % every == 0) rebalance(m);
+  const Layout L = m.layout();
   fluid::FluidState* fluid = set.has_fluid ? &m.fluid : nullptr;
   const double speed = max_particle_speed(m.particles, m.comm);
   const double dt = choose_time_step(set, m.t, m.step, fluid, speed, m.comm);  // time step
@@ -337,8 +364,21 @@ void Simulation::enable_checkpoints(const std::string& directory) {
 
 void Simulation::restart_from(const std::string& checkpoint, const std::string& output_dir) {
   Impl& s = *m_;
+  // weighted: the file's cut lines on the same rank count (they came from the state of the last
+  // rebalance, which the file does not hold); otherwise new ones from the restored particles
+  bool adopted = false;
+  if (s.weighted() && s.comm.size() > 1 && s.set.has_fluid) {
+    const auto boxes = checkpoint_cell_boxes(s.comm, checkpoint);
+    const auto cuts = grid::cuts_of_boxes(s.set.spec, boxes);
+    const long long rx = s.params.integer("grid/ranks_x"), rz = s.params.integer("grid/ranks_z");
+    adopted = boxes.size() == static_cast<std::size_t>(s.comm.size()) && !cuts.xs.empty() &&
+              (rx == 0 || rx + 1 == static_cast<long long>(cuts.xs.size())) &&
+              (rz == 0 || rz + 1 == static_cast<long long>(cuts.zs.size()));
+    if (adopted) adopt_cuts(s, cuts);
+  }
   const CheckpointHeader head = read_checkpoint(checkpoint_parts(s), checkpoint);
   s.t = head.t, s.step = head.step, s.diag = head.diag;
+  if (!adopted) rebalance(s);
   const Output::Mark& mark = head.mark;
   s.restarted = true;
   s.output.reset();

@@ -336,6 +336,12 @@ DemSolver::Snapshot DemSolver::snapshot() const {
   return snap;
 }
 
+void DemSolver::set_regions(std::vector<core::Box2> regions) {
+  const Snapshot snap = snapshot();
+  regions_ = std::move(regions);
+  restore(snap);
+}
+
 void DemSolver::restore(const Snapshot& snap) {
   owned_.clear();
   springs_.clear();

@@ -1,8 +1,12 @@
 #include "picdem/grid/grid.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "picdem/core/error.hpp"
 #include "picdem/grid/field.hpp"
@@ -30,6 +34,22 @@ void declare_parameters(core::ParamSchema& schema) {
   schema.integer("grid/ranks_x", 0, "ranks along x (0: chosen to cut the fewest faces)")
       .non_negative();
   schema.integer("grid/ranks_z", 0, "ranks along z (0: chosen with ranks_x)").non_negative();
+  schema.string("grid/decomposition", "weighted", {"weighted", "uniform"},
+                "weighted: the column and row cut lines balance the work of the cells (fluid "
+                "cells and particles), and the process grid is the one with the lightest "
+                "heaviest block; uniform: equal strips (doc/performance.md)");
+  schema
+      .integer("grid/rebalance_interval", 25,
+               "weighted: the cut lines are recomputed every this many steps (from the step "
+               "number, so that a restart rebalances as the uninterrupted run); 0: only at the "
+               "start")
+      .non_negative();
+  schema
+      .real("grid/rebalance_gain", 0.05,
+            "weighted: new cut lines are taken when they lighten the heaviest block by at least "
+            "this fraction of its work")
+      .non_negative()
+      .at_most(0.9);
   schema.check([](const core::Params& p, std::vector<std::string>& errors) {
     const double h = p.real("grid/cell_size");
     for (const char* key : {"grid/length", "grid/height"}) {
@@ -102,6 +122,32 @@ Decomposition::Decomposition(const GridSpec& spec, core::Comm comm, int halo, in
   zs_ = split(spec.nz, pz);
 }
 
+void Decomposition::set_cuts(std::vector<int> xs, std::vector<int> zs) {
+  auto valid = [&](const std::vector<int>& c, int n) {
+    if (c.size() < 2 || c.front() != 0 || c.back() != n) return false;
+    for (std::size_t j = 1; j < c.size(); ++j)
+      if (c[j] - c[j - 1] < halo_ + 1) return false;
+    return true;
+  };
+  const int px = static_cast<int>(xs.size()) - 1, pz = static_cast<int>(zs.size()) - 1;
+  if (!valid(xs, spec_.nx) || !valid(zs, spec_.nz) || px * pz != comm_.size())
+    throw std::invalid_argument("Decomposition::set_cuts: cut lines do not tile the grid over " +
+                                std::to_string(comm_.size()) + " ranks in strips of at least " +
+                                std::to_string(halo_ + 1) + " cells");
+  px_ = px, pz_ = pz;
+  xs_ = std::move(xs), zs_ = std::move(zs);
+}
+
+IndexBox Decomposition::provided(Stagger s, int rank) const {
+  IndexBox b = owned(s, rank);
+  const IndexBox e = spec_.extent(s);
+  if (b.i0 == e.i0) b.i0 -= halo_;
+  if (b.i1 == e.i1) b.i1 += halo_;
+  if (b.k0 == e.k0) b.k0 -= halo_;
+  if (b.k1 == e.k1) b.k1 += halo_;
+  return b;
+}
+
 IndexBox Decomposition::owned_cells(int rank) const {
   const int cx = rank % px_, cz = rank / px_;
   return {xs_[static_cast<std::size_t>(cx)], xs_[static_cast<std::size_t>(cx) + 1],
@@ -118,10 +164,11 @@ IndexBox Decomposition::owned(Stagger s, int rank) const {
 int Decomposition::owner_of_cell(int i, int k) const {
   i = std::min(std::max(i, 0), spec_.nx - 1);
   k = std::min(std::max(k, 0), spec_.nz - 1);
-  // Blocks are balanced splits: find by search over the (short) start arrays.
-  int cx = 0, cz = 0;
-  while (cx + 1 < px_ && xs_[static_cast<std::size_t>(cx) + 1] <= i) ++cx;
-  while (cz + 1 < pz_ && zs_[static_cast<std::size_t>(cz) + 1] <= k) ++cz;
+  // The strip holding i: the last start <= i.
+  const int cx =
+      static_cast<int>(std::upper_bound(xs_.begin() + 1, xs_.end() - 1, i) - xs_.begin()) - 1;
+  const int cz =
+      static_cast<int>(std::upper_bound(zs_.begin() + 1, zs_.end() - 1, k) - zs_.begin()) - 1;
   return cz * px_ + cx;
 }
 

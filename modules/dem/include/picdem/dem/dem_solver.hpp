@@ -103,6 +103,9 @@ class DemSolver {
   /// Replaces every solid's state and history (any rank count); add_solids must have been
   /// called with the case's solids first (it builds the shape table).
   void restore(const Snapshot& snap);
+  /// Collective: gives rank r the region regions[r] (a new decomposition of the same ranks) and
+  /// moves every solid, with its contact history, to the rank whose region now holds it.
+  void set_regions(std::vector<core::Box2> regions);
 
  private:
   struct ShapeInfo {

@@ -119,4 +119,57 @@ class Halo {
   std::vector<Link> links_[3];
 };
 
+/// Collective: the array `f` laid out on `from` (this rank's old blocks) carried over to `to`
+/// (the same grid and ranks, other cut lines). Every sample of the new storage window gets the
+/// value of the rank that provided it on `from` (Decomposition::provided: the owner, or beyond
+/// the walls the rank bordering them), so ghosts inside the grid take their owner's value.
+template <class T>
+GridArray<T> redistributed(const GridArray<T>& f, const Decomposition& from,
+                           const Decomposition& to) {
+  GridArray<T> g(to, f.stagger());
+  const Stagger s = f.stagger();
+  const int me = from.rank(), ranks = from.size();
+  const MPI_Comm comm = from.comm().raw();
+  const int tag = 740 + static_cast<int>(s);
+  const IndexBox mine = from.provided(s, me), want = to.storage(s, me);
+  std::vector<std::vector<T>> send(static_cast<std::size_t>(ranks)),
+      recv(static_cast<std::size_t>(ranks));
+  std::vector<MPI_Request> req;
+  for (int r = 0; r < ranks; ++r) {
+    if (r == me) continue;
+    const IndexBox in = from.provided(s, r).intersect(want);
+    if (in.empty()) continue;
+    auto& buf = recv[static_cast<std::size_t>(r)];
+    buf.resize(static_cast<std::size_t>(in.size()));
+    req.emplace_back();
+    MPI_Irecv(buf.data(), static_cast<int>(buf.size() * sizeof(T)), MPI_BYTE, r, tag, comm,
+              &req.back());
+  }
+  for (int r = 0; r < ranks; ++r) {
+    const IndexBox out = mine.intersect(to.storage(s, r));
+    if (out.empty()) continue;
+    if (r == me) {
+      for (int k = out.k0; k < out.k1; ++k)
+        for (int i = out.i0; i < out.i1; ++i) g(i, k) = f(i, k);
+      continue;
+    }
+    auto& buf = send[static_cast<std::size_t>(r)];
+    for (int k = out.k0; k < out.k1; ++k)
+      for (int i = out.i0; i < out.i1; ++i) buf.push_back(f(i, k));
+    req.emplace_back();
+    MPI_Isend(buf.data(), static_cast<int>(buf.size() * sizeof(T)), MPI_BYTE, r, tag, comm,
+              &req.back());
+  }
+  MPI_Waitall(static_cast<int>(req.size()), req.data(), MPI_STATUSES_IGNORE);
+  for (int r = 0; r < ranks; ++r) {
+    if (r == me) continue;
+    const IndexBox in = from.provided(s, r).intersect(want);
+    if (in.empty()) continue;
+    std::size_t m = 0;
+    for (int k = in.k0; k < in.k1; ++k)
+      for (int i = in.i0; i < in.i1; ++i) g(i, k) = recv[static_cast<std::size_t>(r)][m++];
+  }
+  return g;
+}
+
 }  // namespace picdem::grid

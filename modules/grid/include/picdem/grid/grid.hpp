@@ -42,18 +42,31 @@ struct GridSpec {
   long long cell_gid(int i, int k) const { return static_cast<long long>(k) * nx + i; }
 };
 
-/// Declares grid/length, grid/height, grid/cell_size, grid/origin, grid/ranks_x, grid/ranks_z.
+/// Declares grid/length, grid/height, grid/cell_size, grid/origin, grid/ranks_x, grid/ranks_z,
+/// grid/decomposition, grid/rebalance_interval, grid/rebalance_gain.
 void declare_parameters(core::ParamSchema& schema);
 /// Builds the spec from validated parameters (nx = length / cell_size rounded to a whole number).
 GridSpec spec_from(const core::Params& params);
 
 /// Block partition of the cells over a px x pz process grid; rank r holds block
-/// (r % px, r / px). Every rank knows every block.
+/// (r % px, r / px). The blocks are a tensor product of px column strips and pz row strips,
+/// whose cut lines need not be equally spaced. Every rank knows every block.
 class Decomposition {
  public:
-  /// px = pz = 0 chooses the process grid that cuts fewest faces. `halo` is the ghost width.
-  /// Throws InputError when a block would be thinner than the halo.
+  /// Equal strips. px = pz = 0 chooses the process grid that cuts fewest faces. `halo` is the
+  /// ghost width. Throws InputError when a block would be thinner than the halo.
   Decomposition(const GridSpec& spec, core::Comm comm, int halo, int px = 0, int pz = 0);
+
+  /// Replaces the cut lines: xs = {0, ..., nx} (px + 1 strictly increasing starts), zs likewise,
+  /// with px * pz = the rank count and every strip at least halo + 1 cells wide (else
+  /// std::invalid_argument). The object keeps its identity: references to it see the new blocks.
+  void set_cuts(std::vector<int> xs, std::vector<int> zs);
+  const std::vector<int>& x_cuts() const { return xs_; }
+  const std::vector<int>& z_cuts() const { return zs_; }
+  /// The samples of a staggered quantity this rank provides when the blocks change: its owned
+  /// samples, with the ghosts beyond the grid's outer sides it borders (so that the provided
+  /// boxes of all ranks tile the extent grown by the halo).
+  IndexBox provided(Stagger s, int rank) const;
 
   const GridSpec& spec() const { return spec_; }
   const core::Comm& comm() const { return comm_; }

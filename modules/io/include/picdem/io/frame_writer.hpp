@@ -64,6 +64,7 @@ class FrameWriter {
   /// frames already indexed in an existing picdem.xdmf (a restart) up to step `keep_up_to_step`
   /// (the restart step: later frames belong to the abandoned run); frames at or after the step of
   /// the next write() are dropped from the index then. `code_version` goes into every frame file.
+  /// `decomposition` must outlive the writer; each frame is written on its blocks of the moment.
   FrameWriter(const std::string& directory, const grid::Decomposition& decomposition,
               bool continue_existing = false,
               long long keep_up_to_step = std::numeric_limits<long long>::max(),
@@ -91,7 +92,7 @@ class FrameWriter {
   void write_xdmf(const std::string& path, const std::vector<std::string>& grids) const;
 
   std::string directory_;
-  grid::Decomposition decomposition_;
+  const grid::Decomposition& decomposition_;  // the run's: its cut lines may change (rebalance)
   std::string code_version_;
   std::vector<Entry> entries_;  // meaningful on rank 0
 };
