@@ -134,7 +134,8 @@ void rebalance(Simulation::Impl& m) {
   };
   core::log(m.comm, "picdem: step " + std::to_string(m.step) + ": cut lines x {" + list(cuts.xs) +
                         "}, z {" + list(cuts.zs) + "}, heaviest block " + std::to_string(before) +
-                        " -> " + std::to_string(cuts.heaviest));
+                        " -> " + std::to_string(cuts.heaviest) + " of " +
+                        std::to_string(cuts.total));
 }
 
 }  // namespace

@@ -105,9 +105,10 @@ Cuts balanced_cuts(const Decomposition& d, const std::vector<long long>& work, i
                                                blocks.begin() + static_cast<long>(offset[c + 1]));
     if (lightest < 0 || candidates[c].heaviest < lightest) lightest = candidates[c].heaviest;
   }
-  const Cuts* best = nullptr;
-  for (const Cuts& k : candidates)
+  Cuts* best = nullptr;
+  for (Cuts& k : candidates)
     if (k.heaviest * 10 <= lightest * 11 && (!best || k.xs.size() > best->xs.size())) best = &k;
+  for (long long c : col) best->total += c;
   return *best;
 }
 

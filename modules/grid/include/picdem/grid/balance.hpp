@@ -12,6 +12,7 @@ namespace picdem::grid {
 struct Cuts {
   std::vector<int> xs, zs;  ///< strip starts, as Decomposition::set_cuts takes them
   long long heaviest = 0;   ///< the largest work of one block under these cuts
+  long long total = 0;      ///< the work of the whole grid (balanced_cuts)
 };
 
 /// Splits the weights w[0..n) into `parts` consecutive strips of at least `min_width` entries,
