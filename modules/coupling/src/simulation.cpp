@@ -108,6 +108,7 @@ particles::ParticleSet seed_water(const Simulation::Impl& m) {
 void adopt_cuts(Simulation::Impl& m, const grid::Cuts& cuts) {
   move_to_cuts({*m.decomp, m.halo, m.set.has_fluid ? &m.fluid : nullptr, m.particles, m.dem.get()},
                cuts);
+  m.occupancy = ParticleOccupancy{};  // on the old blocks: scattered again by the next step
   if (m.pressure) m.pressure = std::make_unique<fluid::PressureSolver>(*m.decomp, m.params);
   if (m.density_solver)
     m.density_solver = std::make_unique<fluid::PressureSolver>(*m.decomp, m.params);
