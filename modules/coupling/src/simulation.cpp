@@ -111,7 +111,8 @@ void adopt_cuts(Simulation::Impl& m, const grid::Cuts& cuts) {
   m.occupancy = ParticleOccupancy{};  // on the old blocks: scattered again by the next step
   if (m.pressure) m.pressure = std::make_unique<fluid::PressureSolver>(*m.decomp, m.params);
   if (m.density_solver)
-    m.density_solver = std::make_unique<fluid::PressureSolver>(*m.decomp, m.params);
+    m.density_solver = std::make_unique<fluid::PressureSolver>(
+        *m.decomp, m.params, fluid::PressureSolver::Equation::DensityCorrection);
 }
 
 // grid/decomposition = weighted: cut lines balancing the particles' work (rebalance.hpp), taken
