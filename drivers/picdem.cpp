@@ -86,6 +86,10 @@ struct RunParts {
   picdem::driver::RunRecord record;
   std::unique_ptr<picdem::coupling::Simulation> sim;
   void finish(const std::string& status, int code, const std::string& message) {
+    if (sim) {
+      const auto split = sim->grid_split();
+      record.split(split.x_cuts, split.z_cuts);
+    }
     record.finish(status, code, sim ? sim->step_count() : 0, sim ? sim->time() : 0.0, message);
   }
 };
@@ -111,6 +115,8 @@ int run_case(const picdem::core::Comm& comm, const Args& args, const picdem::cor
     run.sim->restart_from(from, out);
   }
   run.record.first_step(run.sim->step_count());
+  const auto split = run.sim->grid_split();
+  run.record.split(split.x_cuts, split.z_cuts);
   picdem::coupling::install_stop_signal_handlers();
   run.sim->enable_checkpoints(checkpoints.directory);
   run.sim->run(args.max_steps);

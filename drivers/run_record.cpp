@@ -106,14 +106,23 @@ std::string number(double v) {
   return buf;
 }
 
-// "[px, pz]", the ranks along x and z, as the simulation will choose them (the halo width does
-// not change the choice); null when the grid cannot be split (the run then stops with its error).
-std::string decomposition(const core::Comm& comm, const core::Params& params) {
+std::string int_list(const std::vector<int>& v) {
+  std::string out;
+  for (int c : v) out += (out.empty() ? "" : ", ") + std::to_string(c);
+  return "[" + out + "]";
+}
+
+// {method, ranks: [px, pz], x_cuts, z_cuts}: the cut lines are null until the simulation has
+// placed them (RunRecord::split); null as a whole when the grid cannot be split (the run then
+// stops with its error).
+std::string planned_split(const core::Comm& comm, const core::Params& params) {
   try {
     const grid::Decomposition d(grid::spec_from(params), comm, 1,
                                 static_cast<int>(params.integer("grid/ranks_x")),
                                 static_cast<int>(params.integer("grid/ranks_z")));
-    return "[" + std::to_string(d.px()) + ", " + std::to_string(d.pz()) + "]";
+    return "{method: " + params.string("grid/decomposition") + ", ranks: [" +
+           std::to_string(d.px()) + ", " + std::to_string(d.pz()) +
+           "], x_cuts: null, z_cuts: null}";
   } catch (const core::InputError&) {
     return "null";
   }
@@ -144,7 +153,8 @@ void RunRecord::start(const std::string& output_dir, const std::string& case_fil
   add("restarted_from", restart.empty() ? "null" : yaml_string(restart));
   add("host", yaml_string(host));
   add("ranks", std::to_string(comm_.size()));
-  add("decomposition", decomposition(comm_, params));
+  add("decomposition", planned_split(comm_, params));
+  method_ = params.string("grid/decomposition");
   add("started", yaml_string(started_));
   path_ = output_dir + "/run.yaml";
   std::string error;
@@ -157,6 +167,21 @@ void RunRecord::start(const std::string& output_dir, const std::string& case_fil
   }
   error = comm_.broadcast(error);
   if (!error.empty()) throw core::InputError(error);
+}
+
+void RunRecord::split(const std::vector<int>& x_cuts, const std::vector<int>& z_cuts) {
+  if (path_.empty()) return;
+  for (auto& [key, value] : head_)
+    if (key == "decomposition")
+      value = "{method: " + method_ + ", ranks: [" + std::to_string(x_cuts.size() - 1) + ", " +
+              std::to_string(z_cuts.size() - 1) + "], x_cuts: " + int_list(x_cuts) +
+              ", z_cuts: " + int_list(z_cuts) + "}";
+  if (!comm_.is_root()) return;
+  try {
+    write({{"status", "running"}});
+  } catch (const core::InputError& e) {
+    std::cerr << "picdem: " << e.what() << std::endl;
+  }
 }
 
 void RunRecord::finish(const std::string& status, int exit_code, long long steps, double t,

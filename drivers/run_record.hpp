@@ -41,6 +41,10 @@ class RunRecord {
   /// Collective. `restart`: the checkpoint continued from (empty: a fresh run).
   void start(const std::string& output_dir, const std::string& case_file,
              const core::Params& params, const std::string& restart);
+  /// The cut lines the simulation uses now (strip starts along x and z, Simulation::grid_split);
+  /// rank 0 rewrites run.yaml with them. Called once the simulation is built and again at the
+  /// end (weighted cuts move as the flow does).
+  void split(const std::vector<int>& x_cuts, const std::vector<int>& z_cuts);
   /// The step count the run starts from (after a restart: the checkpoint's).
   void first_step(long long step) { first_step_ = step; }
   /// Rank 0 rewrites run.yaml (no-op before start()). status: completed, stopped_by_signal,
@@ -53,7 +57,7 @@ class RunRecord {
 
   core::Comm comm_;
   double wall_start_ = 0.0;
-  std::string started_, command_;
+  std::string started_, command_, method_;
   std::string path_;  // empty before start()
   std::vector<std::pair<std::string, std::string>> head_;
   long long first_step_ = 0;

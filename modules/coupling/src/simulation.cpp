@@ -228,6 +228,10 @@ void Diagnostics::set_scalars(const std::vector<double>& v) {
   max_speed = v[9], solid_kinetic_energy = v[10];
 }
 
+Simulation::GridSplit Simulation::grid_split() const {
+  return {m_->decomp->x_cuts(), m_->decomp->z_cuts()};
+}
+
 const Diagnostics& Simulation::diagnostics() const {
   return m_->diag;
 }

@@ -3,7 +3,7 @@ usage: check_run_record.py OUTPUT_DIR RANKS CASE_FILE -- MPIEXEC... PICDEM
 
 OUTPUT_DIR is the fixture's run (its console output in OUTPUT_DIR.stdout). Asserted there: the log
 equals the console output line for line; run.yaml holds version, git hash, code version, host,
-ranks, decomposition, start and end dates, wall time, steps, time and exit status consistent with
+ranks, decomposition (the cut lines against the checkpoint's blocks), start and end dates, wall time, steps, time and exit status consistent with
 the run (timeseries.csv, frame attributes, this machine). Then three more runs: a restart from the
 fixture's checkpoint appends to the log and records where it started; a restart from a missing
 file (input error, exit 2) and a run that blows up (solver error, exit 3) each leave run.yaml with
@@ -17,6 +17,7 @@ import socket
 import subprocess
 import sys
 
+import h5py
 import yaml
 
 out, ranks, case = sys.argv[1], int(sys.argv[2]), sys.argv[3]
@@ -61,7 +62,19 @@ with open(out + ".stdout") as f:
 rows = open(os.path.join(out, "timeseries.csv")).read().splitlines()
 last = dict(zip(rows[0].split(","), rows[-1].split(",")))
 check(r["status"] == "completed" and r["exit_code"] == 0 and r["message"] is None, "status")
-check(r["ranks"] == ranks and r["decomposition"] == [2, 1], f"ranks {r['ranks']} {r['decomposition']}")
+split = r["decomposition"]
+check(r["ranks"] == ranks and split["method"] == "weighted" and split["ranks"] == [2, 1],
+      f"ranks {r['ranks']} {split}")
+# The cut lines are those the run ended with: the owned cell boxes in its last checkpoint
+# (grid/boxes: per rank FaceX, FaceZ, Cell, each storage then owned box as i0, i1, k0, k1).
+with h5py.File(os.path.join(out, "checkpoints", "checkpoint_%08d.h5" % r["steps"]), "r") as f:
+    boxes = [int(v) for v in f["grid/boxes"][...].ravel()]
+owned = [boxes[24 * n + 20:24 * n + 24] for n in range(len(boxes) // 24)]
+x_cuts = sorted({b[0] for b in owned} | {b[1] for b in owned})
+z_cuts = sorted({b[2] for b in owned} | {b[3] for b in owned})
+check(split["x_cuts"] == x_cuts and split["z_cuts"] == z_cuts,
+      f"cut lines {split['x_cuts']} {split['z_cuts']} against the checkpoint's {x_cuts} {z_cuts}")
+check(0 < split["x_cuts"][1] < split["x_cuts"][2], f"x cuts {split['x_cuts']}")
 check(r["steps"] == int(last["step"]) == r["steps_this_run"] and r["first_step"] == 0, "steps")
 check(r["time"] == float(last["t"]), f"time {r['time']} != timeseries {last['t']}")
 check(r["code_version"].startswith(r["version"] + " "), "version and code_version disagree")

@@ -72,6 +72,13 @@ class Simulation {
   /// True when the last run() stopped early on a stop signal.
   bool stopped_by_signal() const;
 
+  /// The grid's split over the ranks now, as strip starts {0, ..., nx} along x and {0, ..., nz}
+  /// along z (ranks along x = x_cuts.size() - 1); weighted cuts move at each rebalance.
+  struct GridSplit {
+    std::vector<int> x_cuts, z_cuts;
+  };
+  GridSplit grid_split() const;
+
   const Diagnostics& diagnostics() const;
   double time() const;
   long long step_count() const;
