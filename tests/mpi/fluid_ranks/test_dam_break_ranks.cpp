@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "case_loader.hpp"
+#include "first_ranks.hpp"
 #include "picdem/coupling/simulation.hpp"
 #include "picdem/dem/dem_solver.hpp"
 
@@ -23,15 +24,8 @@ struct RunResult {
 
 RunResult run_case_on(int ranks, const std::string& file, const std::vector<std::string>& overrides,
                       int steps) {
-  MPI_Group world, group;
-  MPI_Comm_group(MPI_COMM_WORLD, &world);
-  std::vector<int> members(static_cast<std::size_t>(ranks));
-  for (int r = 0; r < ranks; ++r) members[static_cast<std::size_t>(r)] = r;
-  MPI_Group_incl(world, ranks, members.data(), &group);
-  MPI_Comm sub;
-  MPI_Comm_create(MPI_COMM_WORLD, group, &sub);
   RunResult out;
-  if (sub != MPI_COMM_NULL) {
+  test_support::on_first_ranks(ranks, [&](MPI_Comm sub) {
     core::Comm comm(sub);
     const auto params = test_support::load_case(comm, file, overrides);
     coupling::Simulation sim(comm, params, "");
@@ -40,17 +34,11 @@ RunResult run_case_on(int ranks, const std::string& file, const std::vector<std:
     if (sim.dem())
       for (const auto& st : sim.dem()->gather_all())
         out.solids.insert(out.solids.end(), {st.x.x, st.x.z, st.theta, st.v.x, st.v.z, st.omega});
-    MPI_Comm_free(&sub);
-  }
-  MPI_Group_free(&group);
-  MPI_Group_free(&world);
-  double v[3] = {out.d.front_x, out.d.fluid_volume, out.d.t};
-  MPI_Bcast(v, 3, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  });
+  std::vector<double> v = {out.d.front_x, out.d.fluid_volume, out.d.t};
+  test_support::broadcast_from_root(v, MPI_DOUBLE);
   out.d.front_x = v[0], out.d.fluid_volume = v[1], out.d.t = v[2];
-  int n = static_cast<int>(out.solids.size());
-  MPI_Bcast(&n, 1, MPI_INT, 0, MPI_COMM_WORLD);
-  out.solids.resize(static_cast<std::size_t>(n));
-  MPI_Bcast(out.solids.data(), n, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  test_support::broadcast_from_root(out.solids, MPI_DOUBLE);
   return out;
 }
 

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "case_loader.hpp"
+#include "first_ranks.hpp"
 #include "picdem/coupling/simulation.hpp"
 #include "picdem/dem/dem_solver.hpp"
 #include "picdem/particles/particle_set.hpp"
@@ -42,15 +43,8 @@ std::vector<long long> gathered(MPI_Comm comm, long long mine) {
 RunResult run_on(int ranks, int steps) {
   const std::vector<std::string> o = {"solver/tolerance=1e-12", "grid/cell_size=0.001",
                                       "time/end=10"};
-  MPI_Group world, group;
-  MPI_Comm_group(MPI_COMM_WORLD, &world);
-  std::vector<int> members(static_cast<std::size_t>(ranks));
-  for (int r = 0; r < ranks; ++r) members[static_cast<std::size_t>(r)] = r;
-  MPI_Group_incl(world, ranks, members.data(), &group);
-  MPI_Comm sub;
-  MPI_Comm_create(MPI_COMM_WORLD, group, &sub);
   RunResult out;
-  if (sub != MPI_COMM_NULL) {
+  test_support::on_first_ranks(ranks, [&](MPI_Comm sub) {
     core::Comm comm(sub);
     const auto params =
         test_support::load_case(comm, "cases/dam_break_cylinders_6_layers/case.yaml", o);
@@ -65,23 +59,13 @@ RunResult run_on(int ranks, int steps) {
     out.d = sim.diagnostics();
     for (const auto& st : sim.dem()->gather_all())
       out.solids.insert(out.solids.end(), {st.x.x, st.x.z, st.v.x, st.v.z});
-    MPI_Comm_free(&sub);
-  }
-  MPI_Group_free(&group);
-  MPI_Group_free(&world);
-  double v = out.d.fluid_volume;
-  MPI_Bcast(&v, 1, MPI_DOUBLE, 0, MPI_COMM_WORLD);
-  out.d.fluid_volume = v;
-  for (auto* a : {&out.solids}) {
-    int n = static_cast<int>(a->size());
-    MPI_Bcast(&n, 1, MPI_INT, 0, MPI_COMM_WORLD);
-    a->resize(static_cast<std::size_t>(n));
-    MPI_Bcast(a->data(), n, MPI_DOUBLE, 0, MPI_COMM_WORLD);
-  }
-  for (auto* a : {&out.particles_start, &out.solids_start, &out.particles_end, &out.solids_end}) {
-    a->resize(static_cast<std::size_t>(ranks));
-    MPI_Bcast(a->data(), ranks, MPI_LONG_LONG, 0, MPI_COMM_WORLD);
-  }
+  });
+  std::vector<double> v = {out.d.fluid_volume};
+  test_support::broadcast_from_root(v, MPI_DOUBLE);
+  out.d.fluid_volume = v[0];
+  test_support::broadcast_from_root(out.solids, MPI_DOUBLE);
+  for (auto* a : {&out.particles_start, &out.solids_start, &out.particles_end, &out.solids_end})
+    test_support::broadcast_from_root(*a, MPI_LONG_LONG);
   return out;
 }
 

@@ -27,15 +27,7 @@ except ImportError:
     sys.exit(77)
 import h5py
 import numpy as np
-
-GRIDS = ["cells", "solids", "obstacles", "particles"]
-failures = []
-
-
-def check(ok, what):
-    if not ok:
-        failures.append(what)
-    return ok
+from check_support import GRIDS, check, finish
 
 
 def expected(out, step):
@@ -135,9 +127,6 @@ def main(out):
 
 if __name__ == "__main__":
     n = main(sys.argv[1])
-    if failures:
-        print("\n".join("FAIL: " + f for f in failures))
-        sys.exit(1)
-    print(f"ParaView's XDMF Reader, Xdmf3ReaderS and Xdmf3ReaderT checked at {n} frame times: "
-          "named, stable blocks (older reader), stable pieces or blocks, one plain dataset per "
-          "grid file and per frame's particle file")
+    finish(f"ParaView's XDMF Reader, Xdmf3ReaderS and Xdmf3ReaderT checked at {n} frame times: "
+           "named, stable blocks (older reader), stable pieces or blocks, one plain dataset per "
+           "grid file and per frame's particle file")

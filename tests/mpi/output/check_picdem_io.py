@@ -16,13 +16,7 @@ import numpy as np
 out, drivers, ranks = sys.argv[1], sys.argv[2], int(sys.argv[3])
 sys.path.insert(0, drivers)
 import picdem_io  # noqa: E402
-
-failures = []
-
-
-def check(ok, what):
-    if not ok:
-        failures.append(what)
+from check_support import check, finish
 
 
 run = picdem_io.Run(out)
@@ -75,8 +69,5 @@ check(np.array_equal(solids["id"][rows], ck.solids["id"]), "checkpoint solid ids
 for name in ("x", "z", "theta", "u", "w", "omega"):
     check(np.array_equal(solids[name][rows], ck.solids[name]), f"checkpoint solids {name}")
 
-if failures:
-    print("\n".join("FAIL: " + f for f in failures))
-    sys.exit(1)
-print(f"picdem_io: {n} time-series rows, {len(frames)} frames, {len(ck.solids['id'])} solids and "
-      f"{len(ck.particles['id'])} particles in the checkpoint agree across the files")
+finish(f"picdem_io: {n} time-series rows, {len(frames)} frames, {len(ck.solids['id'])} solids and "
+       f"{len(ck.particles['id'])} particles in the checkpoint agree across the files")

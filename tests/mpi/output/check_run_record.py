@@ -19,19 +19,14 @@ import sys
 
 import h5py
 import yaml
+from check_support import check, finish
 
 out, ranks, case = sys.argv[1], int(sys.argv[2]), sys.argv[3]
 launch = sys.argv[sys.argv.index("--") + 1:]
 mpiexec, picdem = launch[:-1], launch[-1]
-failures = []
 KEYS = ["version", "git_hash", "code_version", "command", "case_file", "case_name", "output",
         "restarted_from", "host", "ranks", "decomposition", "started", "finished", "wall_seconds",
         "first_step", "steps", "steps_this_run", "time", "status", "exit_code", "message"]
-
-
-def check(ok, what):
-    if not ok:
-        failures.append(what)
 
 
 def record(directory):
@@ -124,8 +119,5 @@ check(m is not None and int(m.group(1)) == r4["steps"] and 0 < r4["steps"] < 100
 check(log_lines(blown)[-1] == "picdem: the run stopped: " + (r4["message"] or ""),
       "solver error not last in the log")
 
-if failures:
-    print("\n".join("FAIL: " + f for f in failures))
-    sys.exit(1)
-print(f"run.yaml and picdem.log: fixture ({r['steps']} steps on {ranks} ranks), restart "
-      f"(+2 steps), input error and blow-up at step {r4['steps']} recorded")
+finish(f"run.yaml and picdem.log: fixture ({r['steps']} steps on {ranks} ranks), restart "
+       f"(+2 steps), input error and blow-up at step {r4['steps']} recorded")

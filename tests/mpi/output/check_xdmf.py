@@ -22,17 +22,10 @@ import xml.etree.ElementTree as ET
 import h5py
 import meshio
 import numpy as np
+from check_support import GRIDS, check, finish
 
-GRIDS = ["cells", "solids", "obstacles", "particles"]
 TYPES = {("Float", "8"): np.float64, ("Float", "4"): np.float32, ("Int", "8"): np.int64,
          ("Int", "4"): np.int32}
-failures = []
-
-
-def check(ok, what):
-    if not ok:
-        failures.append(what)
-    return ok
 
 
 def dataset(out, item):
@@ -195,9 +188,6 @@ def check_meshio(out, positions, index):
 
 if __name__ == "__main__":
     frames = main(sys.argv[1], int(sys.argv[2]))
-    if failures:
-        print("\n".join("FAIL: " + f for f in failures))
-        sys.exit(1)
-    print(f"picdem.xdmf: {frames} frames, 4 temporal collections, every data item checked; "
-          "the per-grid indexes match; meshio reads the particles of every frame (time series "
-          "and meshio.read of the per-frame files)")
+    finish(f"picdem.xdmf: {frames} frames, 4 temporal collections, every data item checked; "
+           "the per-grid indexes match; meshio reads the particles of every frame (time series "
+           "and meshio.read of the per-frame files)")
