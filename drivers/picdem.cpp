@@ -14,10 +14,10 @@
 #include "input_checks.hpp"
 #include "picdem/core/error.hpp"
 #include "picdem/core/log.hpp"
-#include "picdem/coupling/checkpoint.hpp"
 #include "picdem/coupling/schema.hpp"
 #include "picdem/coupling/simulation.hpp"
 #include "picdem/fluid/pressure_solver.hpp"
+#include "picdem/io/checkpoint_files.hpp"
 #include "run_record.hpp"
 
 namespace {
@@ -103,9 +103,9 @@ int run_case(const picdem::core::Comm& comm, const Args& args, const picdem::cor
   run.log.open(comm, out + "/picdem.log", !args.restart.empty());
   picdem::core::log(comm, "picdem: case " + args.case_file + " on " + std::to_string(comm.size()) +
                               " rank(s), output in " + out);
-  const auto checkpoints = picdem::coupling::checkpoint_config_from(params, out);
+  const auto checkpoints = picdem::io::checkpoint_config_from(params, out);
   const std::string from = args.restart == "latest"
-                               ? picdem::coupling::latest_checkpoint(comm, checkpoints.directory)
+                               ? picdem::io::latest_checkpoint(comm, checkpoints.directory)
                                : args.restart;
   run.record.start(out, args.case_file, params, from);
   if (from.empty()) {
@@ -117,7 +117,7 @@ int run_case(const picdem::core::Comm& comm, const Args& args, const picdem::cor
   run.record.first_step(run.sim->step_count());
   const auto split = run.sim->grid_split();
   run.record.split(split.x_cuts, split.z_cuts);
-  picdem::coupling::install_stop_signal_handlers();
+  picdem::io::install_stop_signal_handlers();
   run.sim->enable_checkpoints(checkpoints.directory);
   run.sim->run(args.max_steps);
   run.finish(run.sim->stopped_by_signal() ? "stopped_by_signal" : "completed", 0, "");

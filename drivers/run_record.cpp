@@ -9,8 +9,8 @@
 
 #include "picdem/core/error.hpp"
 #include "picdem/core/log.hpp"
-#include "picdem/coupling/checkpoint.hpp"
 #include "picdem/grid/grid.hpp"
+#include "picdem/io/checkpoint_files.hpp"
 
 #ifndef PICDEM_VERSION
 #define PICDEM_VERSION "unknown"
@@ -145,7 +145,7 @@ void RunRecord::start(const std::string& output_dir, const std::string& case_fil
   head_.clear();
   add("version", yaml_string(PICDEM_VERSION));
   add("git_hash", yaml_string(PICDEM_GIT_HASH));
-  add("code_version", yaml_string(coupling::code_version()));
+  add("code_version", yaml_string(io::code_version()));
   add("command", yaml_string(command_));
   add("case_file", yaml_string(case_file));
   add("case_name", yaml_string(params.string("case/name")));

@@ -11,14 +11,14 @@
 
 #include "picdem/core/error.hpp"
 #include "picdem/core/timer.hpp"
-#include "picdem/coupling/checkpoint.hpp"
 #include "picdem/io/checkpoint.hpp"
+#include "picdem/io/checkpoint_files.hpp"
 #include "picdem/particles/particles.hpp"
 
 namespace picdem::coupling {
 
 // Layout (doc/restart.md):
-//   attributes: format_version, code_version, case_yaml, t, step, ranks, has_fluid,
+//   attributes: format_version, io::code_version, case_yaml, t, step, ranks, has_fluid,
 //               diagnostics (the scalars of Diagnostics in declaration order),
 //               diagnostics_solids_in_box, diagnostics_levels (when there are probes),
 //               output_next_frame, output_frames, output_last_frame_step
@@ -91,8 +91,8 @@ void pause_in_data_if_asked(const core::Comm& comm, long long step, const std::s
 
 void write_header(io::CheckpointWriter& out, const CheckpointParts& parts,
                   const CheckpointHeader& head) {
-  out.attribute("format_version", kCheckpointFormatVersion);
-  out.attribute("code_version", code_version());
+  out.attribute("format_version", io::kCheckpointFormatVersion);
+  out.attribute("code_version", io::code_version());
   out.attribute("case_yaml", parts.params.to_yaml());
   out.attribute("t", head.t);
   out.attribute("step", head.step);
@@ -210,12 +210,12 @@ CheckpointHeader read_header(const io::CheckpointReader& in, const CheckpointPar
   if (!in.has_attribute("format_version") || !in.has_attribute("case_yaml"))
     throw core::InputError(where + " is not a picdem checkpoint (no format_version or case_yaml)");
   const long long version = in.attribute_int("format_version");
-  if (version != kCheckpointFormatVersion)
+  if (version != io::kCheckpointFormatVersion)
     throw core::InputError(where + " has format version " + std::to_string(version) +
                            " (written by picdem " + in.attribute_string("code_version") +
-                           "); this picdem (" + code_version() + ") reads version " +
-                           std::to_string(kCheckpointFormatVersion));
-  const auto diff = case_differences(in.attribute_string("case_yaml"), parts.params);
+                           "); this picdem (" + io::code_version() + ") reads version " +
+                           std::to_string(io::kCheckpointFormatVersion));
+  const auto diff = io::case_differences(in.attribute_string("case_yaml"), parts.params);
   if (!diff.empty()) {
     std::string m = where + " belongs to another case; these keys differ (checkpoint -> now):";
     for (const auto& d : diff) m += "\n  " + d;

@@ -8,10 +8,10 @@
 
 #include "picdem/core/log.hpp"
 #include "picdem/core/timer.hpp"
-#include "picdem/coupling/checkpoint.hpp"
 #include "picdem/dem/dem_solver.hpp"
 #include "picdem/geometry/obstacles.hpp"
 #include "picdem/geometry/outline.hpp"
+#include "picdem/io/checkpoint_files.hpp"
 #include "picdem/io/csv_writer.hpp"
 #include "picdem/io/frame_writer.hpp"
 #include "picdem/io/render.hpp"
@@ -70,7 +70,7 @@ Output::Output(core::Comm comm, const core::Params& params, const grid::Decompos
   if (params_.boolean("output/paraview"))
     frames_writer_ = std::make_unique<io::FrameWriter>(
         dir_, d, append, resume ? resume->last_frame_step : std::numeric_limits<long long>::max(),
-        code_version());
+        io::code_version());
   std::vector<std::string> columns = Diagnostics::scalar_names();
   const auto probes = params.reals("output/level_probes");
   for (std::size_t n = 0; n < probes.size(); ++n)

@@ -2,11 +2,11 @@
 
 #include <sstream>
 
-#include "picdem/coupling/checkpoint.hpp"
 #include "picdem/dem/parameters.hpp"
 #include "picdem/fluid/fluid.hpp"
 #include "picdem/geometry/obstacles.hpp"
 #include "picdem/grid/grid.hpp"
+#include "picdem/io/checkpoint_files.hpp"
 #include "picdem/particles/particles.hpp"
 
 namespace picdem::coupling {
@@ -18,7 +18,9 @@ void declare_parameters(core::ParamSchema& s) {
   s.section("time", "Simulated time and the adaptive time step.");
   s.real("time/end", 1.0,
          "simulated time to reach [s]; the run ends with the first step at or past it (the last "
-         "step is not shortened, so continuing to a later end follows the same trajectory)").positive().is_required();
+         "step is not shortened, so continuing to a later end follows the same trajectory)")
+      .positive()
+      .is_required();
   s.real("time/cfl", 0.5, "CFL number: dt <= cfl h / max|u| on the grid").positive().at_most(5.0);
   s.real("time/dt_max", 1e-3, "largest time step [s]").positive();
   s.real("time/dt_min", 1e-8, "smallest time step [s]; a step below it stops the run as blown up")
@@ -141,7 +143,7 @@ core::ParamSchema case_schema() {
   particles::declare_parameters(s);
   geometry::declare_obstacle_parameters(s);
   dem::declare_parameters(s);
-  declare_checkpoint_parameters(s);
+  io::declare_checkpoint_parameters(s);
   return s;
 }
 

@@ -13,7 +13,6 @@
 #include "picdem/core/error.hpp"
 #include "picdem/core/log.hpp"
 #include "picdem/core/timer.hpp"
-#include "picdem/coupling/checkpoint.hpp"
 #include "picdem/coupling/output.hpp"
 #include "picdem/coupling/solids_in_fluid.hpp"
 #include "picdem/dem/dem_solver.hpp"
@@ -22,6 +21,7 @@
 #include "picdem/fluid/pressure_solver.hpp"
 #include "picdem/geometry/obstacles.hpp"
 #include "picdem/grid/field.hpp"
+#include "picdem/io/checkpoint_files.hpp"
 #include "picdem/particles/particles.hpp"
 
 namespace picdem::coupling {
@@ -72,8 +72,8 @@ struct Simulation::Impl {
 
   // output and checkpoints
   std::unique_ptr<Output> output;
-  CheckpointConfig checkpoint;  // directory empty: no checkpoints
-  bool restarted = false;       // the state came from a checkpoint (no initial frame)
+  io::CheckpointConfig checkpoint;  // directory empty: no checkpoints
+  bool restarted = false;           // the state came from a checkpoint (no initial frame)
   bool stopped_by_signal = false;
 
   Layout layout() const { return {*decomp, *halo, comm}; }
@@ -312,12 +312,12 @@ void Simulation::run(long long max_steps) {
   if (s.output && !s.restarted)
     s.output->frame(s.t, s.step, s.diag, s.particles, s.fluid.p, s.fluid.cells, s.dem.get(),
                     s.obstacles, true);
-  const CheckpointConfig& ck = s.checkpoint;
+  const io::CheckpointConfig& ck = s.checkpoint;
   double wall_last_checkpoint = core::wall_seconds();
   long long last_checkpoint_step = s.restarted ? s.step : -1;
   auto checkpoint = [&] {
-    Simulation::write_checkpoint(ck.directory + "/" + checkpoint_file_name(s.step));
-    prune_checkpoints(s.comm, ck.directory, ck.keep);
+    Simulation::write_checkpoint(ck.directory + "/" + io::checkpoint_file_name(s.step));
+    io::prune_checkpoints(s.comm, ck.directory, ck.keep);
     wall_last_checkpoint = core::wall_seconds();
     last_checkpoint_step = s.step;
   };
@@ -331,7 +331,7 @@ void Simulation::run(long long max_steps) {
                       s.obstacles, false);
     }
     progress.report(s.t, s.step, s.diag.dt, s.diag.ppe_iterations);
-    const bool stop = s.comm.any(stop_signal_received());
+    const bool stop = s.comm.any(io::stop_signal_received());
     if (!ck.directory.empty()) {
       const bool by_steps = ck.every_steps > 0 && s.step % ck.every_steps == 0;
       const bool by_time =
@@ -364,9 +364,9 @@ CheckpointParts checkpoint_parts(Simulation::Impl& s) {
 
 void Simulation::enable_checkpoints(const std::string& directory) {
   Impl& s = *m_;
-  s.checkpoint = checkpoint_config_from(s.params, "");
+  s.checkpoint = io::checkpoint_config_from(s.params, "");
   s.checkpoint.directory = directory;
-  if (!directory.empty()) open_checkpoint_directory(s.comm, directory, !s.restarted);
+  if (!directory.empty()) io::open_checkpoint_directory(s.comm, directory, !s.restarted);
 }
 
 void Simulation::restart_from(const std::string& checkpoint, const std::string& output_dir) {

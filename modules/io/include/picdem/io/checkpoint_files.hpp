@@ -1,5 +1,6 @@
 #pragma once
-// Checkpoint / restart of a coupled run, and the checks that stop a blown-up run.
+// The checkpoint files of a run: their keys in the case, names, the directory, the stored case
+// compared with the current one, the code version, and the stop signals.
 //
 // A checkpoint is one parallel HDF5 file (io::CheckpointWriter: written collectively under
 // NAME.tmp, renamed when complete) holding the complete state of METHOD.md section 7, the
@@ -11,7 +12,7 @@
 #include "picdem/core/comm.hpp"
 #include "picdem/core/params.hpp"
 
-namespace picdem::coupling {
+namespace picdem::io {
 
 /// Version of the file layout; a file of another version is refused with a message.
 constexpr long long kCheckpointFormatVersion = 1;
@@ -59,4 +60,4 @@ void install_stop_signal_handlers();
 /// True once SIGTERM or SIGUSR1 arrived on this process.
 bool stop_signal_received();
 
-}  // namespace picdem::coupling
+}  // namespace picdem::io

@@ -1,4 +1,4 @@
-#include "picdem/coupling/checkpoint.hpp"
+#include "picdem/io/checkpoint_files.hpp"
 
 #include <algorithm>
 #include <csignal>
@@ -14,7 +14,7 @@
 #define PICDEM_CODE_VERSION "unknown"
 #endif
 
-namespace picdem::coupling {
+namespace picdem::io {
 
 namespace fs = std::filesystem;
 
@@ -226,4 +226,4 @@ bool stop_signal_received() {
   return stop_flag != 0;
 }
 
-}  // namespace picdem::coupling
+}  // namespace picdem::io
