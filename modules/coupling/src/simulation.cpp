@@ -3,6 +3,7 @@
 #include "checkpoint_state.hpp"
 #include "rebalance.hpp"
 #include "step_phases.hpp"
+#include "viscous_bodies.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -69,6 +70,7 @@ struct Simulation::Impl {
   long long step = 0;
   Diagnostics diag;
   std::vector<core::SolidLoads> fluid_loads;  // J p + F_q of the last step, owned solids
+  ViscousExchange viscous;                    // the last step's viscous loads (implicit scheme)
 
   // output and checkpoints
   std::unique_ptr<Output> output;
@@ -263,16 +265,18 @@ void Simulation::step() {
     if (correct_density(L, set, m.step, solids, m.fluid, m.density_solver.get(), m.particles))
       mark_cells(L, set, solids.cut, m.particles, m.occupancy, m.fluid);  // density: cells again
     particles_to_grid(L, set, solids, m.particles, m.fluid);              // transfer
-    add_forces(L, set.fluid, solids.scene, dt, m.fluid);                  // forces
-    const auto collision = predict_contacts(m.dem.get(), dt);             // contact
-    solve = solve_pressure(L, set, solids, collision, dt, *m.pressure, m.fluid);     // pressure
-    project(L, set, dt, m.fluid);                                                    // project
-    if (m.dem) m.fluid_loads = advance_solids(m.pressure.get(), fluid, dt, *m.dem);  // solids
+    m.viscous = add_forces(L, set.fluid, m.dem.get(), m.obstacles, dt, m.fluid);  // forces
+    auto collision = predict_contacts(m.dem.get(), dt);                           // contact
+    // eq. 6: the viscous loads join the p-independent loads of V* (doc/viscous.md)
+    if (m.dem && !m.viscous.solids.empty()) collision = plus_viscous(collision, m.viscous, *m.dem);
+    solve = solve_pressure(L, set, solids, collision, dt, *m.pressure, m.fluid);  // pressure
+    project(L, set, dt, m.fluid);                                                 // project
+    if (m.dem) m.fluid_loads = advance_solids(m.pressure.get(), fluid, dt, m.viscous, *m.dem);
     const SolidScene after = scene_of(m.dem.get(), m.obstacles);  // solids at X^{n+1}
     grid_to_particles(L, set, solids, after, m.dem.get(), m.fluid, m.particles);    // transfer
     advect_particles(L, set, m.step, solids.cut, after, dt, m.fluid, m.particles);  // advect
   } else if (m.dem) {
-    m.fluid_loads = advance_solids(nullptr, nullptr, dt, *m.dem);  // dry: solids only
+    m.fluid_loads = advance_solids(nullptr, nullptr, dt, {}, *m.dem);  // dry: solids only
   }
   m.t += dt;
   ++m.step;
@@ -304,6 +308,10 @@ std::vector<core::SolidLoads> Simulation::fluid_loads() const {
     out.push_back({static_cast<std::int64_t>(all[n]), {all[n + 1], all[n + 2]}, all[n + 3]});
   std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
   return out;
+}
+
+const ViscousExchange& Simulation::viscous_loads() const {
+  return m_->viscous;
 }
 
 void Simulation::run(long long max_steps) {

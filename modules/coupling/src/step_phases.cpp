@@ -143,16 +143,24 @@ void particles_to_grid(const Layout& L, const StepSettings& set, const SolidsAtS
   f.u_old = f.u, f.w_old = f.w;
 }
 
-// Viscosity explicit, or implicit at the true boundaries of the scene's bodies.
-void add_forces(const Layout& L, const fluid::FluidConfig& cfg, const SolidScene& scene, double dt,
-                fluid::FluidState& f) {
+// Viscosity explicit, or implicit at the true boundaries of every solid (at X^n) and obstacle.
+ViscousExchange add_forces(const Layout& L, const fluid::FluidConfig& cfg,
+                           const dem::DemSolver* dem,
+                           const std::vector<geometry::Obstacle>& obstacles, double dt,
+                           fluid::FluidState& f) {
   core::ScopedTimer timer("forces");
   fluid::apply_gravity(f.u, f.w, f.cells, dt, cfg);
-  if (cfg.implicit_viscosity)
-    fluid::apply_viscosity_implicit(f.u, f.w, f.cells, dt, cfg, L.d, L.halo, viscous_bodies(scene));
-  else
+  ViscousExchange viscous;
+  if (cfg.implicit_viscosity) {
+    const SolidScene all = scene_of_all(dem, obstacles);
+    const auto step = fluid::apply_viscosity_implicit(f.u, f.w, f.cells, dt, cfg, L.d, L.halo,
+                                                      viscous_bodies(all));
+    viscous = viscous_exchange(all, step.loads, dem, L.comm);
+  } else {
     fluid::apply_viscosity(f.u, f.w, f.cells, dt, cfg, L.d, L.halo);
+  }
   fluid::enforce_walls(f.u, f.w, cfg, L.d);
+  return viscous;
 }
 
 // Collision loads for eq. 6 inside the PPE.
@@ -184,14 +192,15 @@ void project(const Layout& L, const StepSettings& set, double dt, fluid::FluidSt
   fluid::enforce_walls(f.u, f.w, set.fluid, L.d);
 }
 
-// F_fluid = J p^{n+1} from the rows of the pressure solve, then K DEM subcycles with it fixed.
+// F_fluid = J p^{n+1} from the rows of the pressure solve plus the step's viscous loads, then K
+// DEM subcycles with it fixed.
 std::vector<core::SolidLoads> advance_solids(const fluid::PressureSolver* pressure,
                                              const fluid::FluidState* fluid, double dt,
-                                             dem::DemSolver& dem) {
+                                             const ViscousExchange& viscous, dem::DemSolver& dem) {
   core::ScopedTimer timer("solids");
   std::vector<core::SolidLoads> loads;
   if (pressure && fluid) loads = fluid_loads(*pressure, fluid->p, dem);
-  dem.advance(dt, loads);
+  dem.advance(dt, viscous.solids.empty() ? loads : plus_viscous(loads, viscous, dem));
   return loads;
 }
 

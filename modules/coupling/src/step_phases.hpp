@@ -91,9 +91,13 @@ bool correct_density(const Layout& L, const StepSettings& set, long long step,
 void particles_to_grid(const Layout& L, const StepSettings& set, const SolidsAtStart& solids,
                        const particles::ParticleSet& particles, fluid::FluidState& fluid);
 
-/// forces: gravity and viscosity (explicit, or implicit at the bodies of `scene`) -> u~.
-void add_forces(const Layout& L, const fluid::FluidConfig& cfg, const SolidScene& scene, double dt,
-                fluid::FluidState& fluid);
+/// forces: gravity and viscosity -> u~. Explicit, or implicit at the true boundaries of every
+/// solid of `dem` (collective) and obstacle; returns the implicit scheme's viscous loads (empty
+/// for the explicit one).
+ViscousExchange add_forces(const Layout& L, const fluid::FluidConfig& cfg,
+                           const dem::DemSolver* dem,
+                           const std::vector<geometry::Obstacle>& obstacles, double dt,
+                           fluid::FluidState& fluid);
 
 /// contact: collision loads predicted at level n with dt in eq. 8 (none without solids).
 std::vector<core::SolidLoads> predict_contacts(const dem::DemSolver* dem, double dt);
@@ -108,10 +112,11 @@ fluid::SolveStats solve_pressure(const Layout& L, const StepSettings& set,
 void project(const Layout& L, const StepSettings& set, double dt, fluid::FluidState& fluid);
 
 /// solids: F_fluid = J p^{n+1} from the last solve of `pressure` (none in a dry run: pressure =
-/// fluid = nullptr), then the DEM subcycles (eqs. 21-25). Returns the fluid loads used.
+/// fluid = nullptr) plus the viscous loads of the step, then the DEM subcycles (eqs. 21-25).
+/// Returns the pressure loads used.
 std::vector<core::SolidLoads> advance_solids(const fluid::PressureSolver* pressure,
                                              const fluid::FluidState* fluid, double dt,
-                                             dem::DemSolver& dem);
+                                             const ViscousExchange& viscous, dem::DemSolver& dem);
 
 /// transfer: grid -> particles with the solids at X^{n+1} on covered faces, then gap damping
 /// (eq. 20) at the contacts of X^{n+1}.

@@ -41,8 +41,8 @@ void declare_parameters(core::ParamSchema& schema) {
   schema.string("fluid/viscosity_scheme", "explicit", {"explicit", "implicit"},
                 "explicit: 5-point viscosity on faces between fluid cells, the time step held "
                 "below h^2 / (4 nu); implicit: backward Euler with no-slip at the true boundary of "
-                "solids and obstacles (doc/viscous.md; one rank when there are solids, and the "
-                "viscous loads are not yet given to the solids)");
+                "solids and obstacles, whose viscous loads enter the solids' update "
+                "(doc/viscous.md; one rank when there are solids)");
   schema.section("solver", "The pressure solve: Belos CG preconditioned by MueLu.");
   schema.real("solver/tolerance", 1e-8, "relative true residual ||b - A p|| / ||b|| to reach")
       .positive()

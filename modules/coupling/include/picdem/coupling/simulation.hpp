@@ -32,7 +32,7 @@ struct Diagnostics {
   int ppe_iterations = 0;
   double ppe_residual = 0.0;
   bool ppe_structure_reused = false;  ///< pressure solve kept its Tpetra structure (not in csv)
-  double front_x = 0.0;  ///< largest x of any fluid particle, from the left wall [m]
+  double front_x = 0.0;               ///< largest x of any fluid particle, from the left wall [m]
   long long particles = 0;
   double max_speed = 0.0;
   double solid_kinetic_energy = 0.0;
@@ -45,6 +45,15 @@ struct Diagnostics {
   std::vector<double> scalars() const;
   /// Throws std::invalid_argument when v does not hold scalar_names().size() values.
   void set_scalars(const std::vector<double>& v);
+};
+
+/// The viscous loads of a step (fluid/viscosity_scheme: implicit; doc/viscous.md), per unit
+/// depth: force [N/m], torque [N m/m]; the same on every rank. Empty with the explicit scheme,
+/// which does not compute them, and with zero viscosity.
+struct ViscousExchange {
+  std::vector<core::SolidLoads> solids;     ///< every solid, index = id; torque about its centre
+  std::vector<core::SolidLoads> obstacles;  ///< id = the obstacle's index; torque about (0, 0)
+  core::Vec2 walls;                         ///< on the tank walls
 };
 
 class Simulation {
@@ -96,6 +105,8 @@ class Simulation {
   const dem::DemSolver* dem() const;
   /// The current collision and fluid loads on every solid (ordered by id), on every rank.
   std::vector<core::SolidLoads> fluid_loads() const;
+  /// The viscous loads of the last step, given to the solids in eq. 6 (empty: explicit scheme).
+  const ViscousExchange& viscous_loads() const;
 
   /// The modules and the run's records (simulation.cpp); opaque outside it.
   struct Impl;
