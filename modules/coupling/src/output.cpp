@@ -81,6 +81,16 @@ Output::Output(core::Comm comm, const core::Params& params, const grid::Decompos
   solids_ = std::make_unique<io::CsvWriter>(
       comm_, dir_ + "/solids.csv",
       std::vector<std::string>{"t", "id", "x", "z", "theta", "u", "w", "omega"}, append, resume_t);
+  forces_ = std::make_unique<io::CsvWriter>(
+      comm_, dir_ + "/forces.csv",
+      std::vector<std::string>{"t", "id", "obstacle", "pressure_x", "pressure_z", "viscous_x",
+                               "viscous_z", "torque_pressure", "torque_viscous"},
+      append, resume_t);
+  forces_interval_ = params.real("output/forces_interval");
+  // the next time due, a function of t alone (a restart continues the same series)
+  if (forces_interval_ > 0.0 && resume)
+    next_forces_ =
+        forces_interval_ * std::floor(resume_t / forces_interval_ + 1e-9) + forces_interval_;
 }
 
 Output::~Output() = default;
@@ -91,6 +101,18 @@ void Output::record(const Diagnostics& g) {
   if (!params_.reals("output/solid_count_box").empty())
     row.push_back(static_cast<double>(g.solids_in_box));
   timeseries_->row(row);
+}
+
+bool Output::forces_due(double t) const {
+  return t >= next_forces_ - 1e-12 * std::max(1.0, forces_interval_);
+}
+
+void Output::forces(double t, const std::vector<BodyForces>& rows) {
+  for (const auto& r : rows)
+    forces_->row({t, static_cast<double>(r.id), r.obstacle ? 1.0 : 0.0, r.pressure.x, r.pressure.z,
+                  r.viscous.x, r.viscous.z, r.torque_pressure, r.torque_viscous});
+  if (forces_interval_ > 0.0)
+    next_forces_ = forces_interval_ * std::floor(t / forces_interval_ + 1e-9) + forces_interval_;
 }
 
 void Output::frame(double t, long long step, const Diagnostics&, const particles::ParticleSet& ps,
@@ -173,7 +195,7 @@ void Output::finish(double t, long long step, const Diagnostics&, const particle
                        ":\n  pictures/frame_NNNNNN.png (NNNNNN = step)" + movie +
                        "\n  picdem.xdmf + frames/*.h5 (ParaView; one grid each: cells.xdmf, "
                        "particles.xdmf, solids.xdmf, obstacles.xdmf)\n  timeseries.csv, "
-                       "solids.csv, case_resolved.yaml, timers.txt");
+                       "solids.csv, forces.csv, case_resolved.yaml, timers.txt");
 }
 
 }  // namespace picdem::coupling

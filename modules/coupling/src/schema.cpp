@@ -51,6 +51,10 @@ void declare_parameters(core::ParamSchema& s) {
           "[x_min, x_max, z_min, z_max] [m]: solids whose centre is inside are counted in "
           "timeseries.csv (solids_in_box); empty: no count")
       .size(0, 4);
+  s.real("output/forces_interval", 0.0,
+         "simulated time between the rows of forces.csv (the fluid's loads on every solid and "
+         "obstacle) [s]; 0: every step")
+      .non_negative();
   s.real("output/progress_seconds", 5.0, "wall seconds between progress lines").non_negative();
 
   s.section("free_surface", "The free surface from the particles (doc/coupling.md).");

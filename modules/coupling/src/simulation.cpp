@@ -1,5 +1,6 @@
 #include "picdem/coupling/simulation.hpp"
 
+#include "body_forces.hpp"
 #include "checkpoint_state.hpp"
 #include "rebalance.hpp"
 #include "step_phases.hpp"
@@ -69,8 +70,9 @@ struct Simulation::Impl {
   double t = 0.0;
   long long step = 0;
   Diagnostics diag;
-  std::vector<core::SolidLoads> fluid_loads;  // J p + F_q of the last step, owned solids
-  ViscousExchange viscous;                    // the last step's viscous loads (implicit scheme)
+  std::vector<core::SolidLoads> fluid_loads;     // J p + F_q of the last step, owned solids
+  ViscousExchange viscous;                       // the last step's viscous loads (implicit scheme)
+  std::vector<core::SolidLoads> obstacle_loads;  // J p + F_q of the last step, every obstacle
 
   // output and checkpoints
   std::unique_ptr<Output> output;
@@ -271,6 +273,9 @@ void Simulation::step() {
     if (m.dem && !m.viscous.solids.empty()) collision = plus_viscous(collision, m.viscous, *m.dem);
     solve = solve_pressure(L, set, solids, collision, dt, *m.pressure, m.fluid);  // pressure
     project(L, set, dt, m.fluid);                                                 // project
+    if (!m.obstacles.empty())                                                     // for forces.csv
+      m.obstacle_loads = obstacle_pressure_loads(solids.cut, m.fluid.cells, L.d, m.fluid.p,
+                                                 set.quadrature, m.obstacles.size(), m.comm);
     if (m.dem) m.fluid_loads = advance_solids(m.pressure.get(), fluid, dt, m.viscous, *m.dem);
     const SolidScene after = scene_of(m.dem.get(), m.obstacles);  // solids at X^{n+1}
     grid_to_particles(L, set, solids, after, m.dem.get(), m.fluid, m.particles);    // transfer
@@ -314,6 +319,10 @@ const ViscousExchange& Simulation::viscous_loads() const {
   return m_->viscous;
 }
 
+std::vector<BodyForces> Simulation::body_forces() const {
+  return coupling::body_forces(fluid_loads(), m_->obstacle_loads, m_->viscous);
+}
+
 void Simulation::run(long long max_steps) {
   Impl& s = *m_;
   core::Progress progress(s.comm, s.t, s.set.t_end, s.params.real("output/progress_seconds"));
@@ -335,6 +344,7 @@ void Simulation::run(long long max_steps) {
     check_step(s.diag, s.set.spec.h, s.set.has_fluid, s.dem.get(), s.comm);
     if (s.output) {
       s.output->record(s.diag);
+      if (s.output->forces_due(s.t)) s.output->forces(s.t, body_forces());
       s.output->frame(s.t, s.step, s.diag, s.particles, s.fluid.p, s.fluid.cells, s.dem.get(),
                       s.obstacles, false);
     }

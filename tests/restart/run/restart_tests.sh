@@ -72,7 +72,7 @@ bitwise)
     expect_ok $? "$W/C"
     $cmp "$(ck "$W/A" 40)" "$(ck "$W/C" 40)" bitwise || fail "the state after restart at 30 differs"
   fi
-  for f in timeseries.csv solids.csv picdem.xdmf cells.xdmf solids.xdmf obstacles.xdmf \
+  for f in timeseries.csv solids.csv forces.csv picdem.xdmf cells.xdmf solids.xdmf obstacles.xdmf \
     particles.xdmf; do
     [ -e "$W/A/$f" ] || [ -e "$W/B/$f" ] || continue  # a grid the case does not have
     cmp "$W/A/$f" "$W/B/$f" || fail "$f differs after restart"

@@ -1,6 +1,7 @@
 #pragma once
 // What a run leaves for people: timeseries.csv every step; at every output interval a ParaView
-// frame, a PNG picture and the solids' rows of solids.csv; the resolved parameters at the start.
+// frame, a PNG picture and the solids' rows of solids.csv; forces.csv every step or at its own
+// interval; the resolved parameters at the start.
 #include <memory>
 #include <string>
 #include <vector>
@@ -42,6 +43,10 @@ class Output {
 
   /// One row of timeseries.csv.
   void record(const Diagnostics& diag);
+  /// True when forces.csv takes the rows of time t (output/forces_interval; 0: every step).
+  bool forces_due(double t) const;
+  /// The rows of forces.csv at time t (rank 0 writes).
+  void forces(double t, const std::vector<BodyForces>& rows);
   /// Writes a frame when an output time is reached (or `force`).
   void frame(double t, long long step, const Diagnostics& diag, const particles::ParticleSet& ps,
              const grid::CellField& p, const fluid::CellStates& cells, const dem::DemSolver* dem,
@@ -65,7 +70,8 @@ class Output {
   long long frames_ = 0;
   long long last_frame_step_ = -1;
   std::unique_ptr<io::FrameWriter> frames_writer_;
-  std::unique_ptr<io::CsvWriter> timeseries_, solids_;
+  std::unique_ptr<io::CsvWriter> timeseries_, solids_, forces_;
+  double forces_interval_ = 0.0, next_forces_ = 0.0;
 };
 
 }  // namespace picdem::coupling

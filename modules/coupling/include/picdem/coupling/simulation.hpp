@@ -56,6 +56,16 @@ struct ViscousExchange {
   core::Vec2 walls;                         ///< on the tank walls
 };
 
+/// One row of forces.csv (doc/output.md): the fluid's loads on a solid or obstacle over the last
+/// step, per unit depth. Pressure: J p^{n+1} + F_q (eq. 6); viscous: ViscousExchange (zero with
+/// the explicit scheme). Torques about the solid's centre of mass, an obstacle's about (0, 0).
+struct BodyForces {
+  std::int64_t id = 0;                                 ///< solid id, or obstacle index
+  bool obstacle = false;                               ///< a fixed obstacle
+  core::Vec2 pressure, viscous;                        ///< [N/m]
+  double torque_pressure = 0.0, torque_viscous = 0.0;  ///< [N m/m]
+};
+
 class Simulation {
  public:
   /// `output_dir` empty: no files are written (tests).
@@ -107,6 +117,8 @@ class Simulation {
   std::vector<core::SolidLoads> fluid_loads() const;
   /// The viscous loads of the last step, given to the solids in eq. 6 (empty: explicit scheme).
   const ViscousExchange& viscous_loads() const;
+  /// Collective: the fluid's loads of the last step on every solid (by id), then every obstacle.
+  std::vector<BodyForces> body_forces() const;
 
   /// The modules and the run's records (simulation.cpp); opaque outside it.
   struct Impl;
