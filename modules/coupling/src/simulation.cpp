@@ -175,10 +175,6 @@ Simulation::Simulation(core::Comm comm, core::Params params, std::string output_
   m.set.has_bodies = m.dem || !m.obstacles.empty();
 
   if (m.set.has_fluid) {
-    if (m.set.fluid.implicit_viscosity && m.dem && comm.size() > 1)
-      throw core::InputError(
-          "fluid/viscosity_scheme: implicit runs on one rank when there are solids (each rank "
-          "sees only its solids; doc/viscous.md)");
     m.pressure = std::make_unique<fluid::PressureSolver>(d, params);
     if (m.set.density_relaxation > 0.0)
       m.density_solver = std::make_unique<fluid::PressureSolver>(

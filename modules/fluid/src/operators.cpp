@@ -42,7 +42,7 @@ void declare_parameters(core::ParamSchema& schema) {
                 "explicit: 5-point viscosity on faces between fluid cells, the time step held "
                 "below h^2 / (4 nu); implicit: backward Euler with no-slip at the true boundary of "
                 "solids and obstacles, whose viscous loads enter the solids' update "
-                "(doc/viscous.md; one rank when there are solids)");
+                "(doc/viscous.md)");
   schema.section("solver", "The pressure solve: Belos CG preconditioned by MueLu.");
   schema.real("solver/tolerance", 1e-8, "relative true residual ||b - A p|| / ||b|| to reach")
       .positive()
