@@ -1,8 +1,8 @@
 #pragma once
-// The run's state <-> a checkpoint file (layout in doc/restart.md). Each module lists the arrays
-// it keeps (particles::ParticleSet::for_each_saved, fluid::FluidState::for_each_saved,
-// dem::DemSolver::Snapshot::for_each); this file only names the groups, writes them and puts
-// them back, on the same or another rank layout. Private to the coupling module.
+// The run's state <-> a checkpoint file (layout in doc/restart.md). Each module saves and
+// restores its own state (particles/checkpoint.hpp, fluid/checkpoint.hpp, dem/checkpoint.hpp,
+// on the same or another rank layout); this file writes the run's header (clock, diagnostics,
+// output marks, case) and calls them in order. Private to the coupling module.
 #include <string>
 #include <vector>
 
@@ -46,10 +46,6 @@ void write_checkpoint(const CheckpointParts& parts, const CheckpointHeader& head
 /// returns its header. Throws core::InputError for a missing, truncated, corrupted or mismatched
 /// file (format version, case).
 CheckpointHeader read_checkpoint(const CheckpointParts& parts, const std::string& path);
-
-/// Collective: the owned cell box of every rank that wrote the checkpoint `path` (rank order;
-/// empty without water, or when the file cannot be read).
-std::vector<core::IndexBox> checkpoint_cell_boxes(const core::Comm& comm, const std::string& path);
 
 /// Collective, after every step (g: its diagnostics): throws core::SolverError naming the step
 /// when the step blew up: a particle moved more than 2 h (CFL far exceeded), or a solid's real

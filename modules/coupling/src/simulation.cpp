@@ -24,6 +24,7 @@
 #include "picdem/geometry/obstacles.hpp"
 #include "picdem/grid/field.hpp"
 #include "picdem/io/checkpoint_files.hpp"
+#include "picdem/io/checkpoint_grid.hpp"
 #include "picdem/particles/particles.hpp"
 
 namespace picdem::coupling {
@@ -389,7 +390,7 @@ void Simulation::restart_from(const std::string& checkpoint, const std::string& 
   // rebalance, which the file does not hold); otherwise new ones from the restored particles
   bool adopted = false;
   if (s.weighted() && s.comm.size() > 1 && s.set.has_fluid) {
-    const auto boxes = checkpoint_cell_boxes(s.comm, checkpoint);
+    const auto boxes = io::checkpoint_cell_boxes(s.comm, checkpoint);
     const auto cuts = grid::cuts_of_boxes(s.set.spec, boxes);
     const long long rx = s.params.integer("grid/ranks_x"), rz = s.params.integer("grid/ranks_z");
     adopted = boxes.size() == static_cast<std::size_t>(s.comm.size()) && !cuts.xs.empty() &&
