@@ -7,7 +7,7 @@ include(CMakePackageConfigHelpers)
 set(_picdem_config_dir ${CMAKE_INSTALL_LIBDIR}/cmake/picdem)
 
 set(_picdem_libraries)
-foreach(m core grid particles fluid dem io geometry coupling)
+foreach(m core grid particles fluid dem io geometry coupling run)
   if(TARGET picdem_${m})
     list(APPEND _picdem_libraries picdem_${m})
   endif()

@@ -18,6 +18,7 @@
 #include "picdem/coupling/simulation.hpp"
 #include "picdem/fluid/pressure_solver.hpp"
 #include "picdem/io/checkpoint_files.hpp"
+#include "picdem/run/run.hpp"
 #include "run_record.hpp"
 
 namespace {
@@ -85,6 +86,7 @@ struct RunParts {
   picdem::driver::LogTee log;
   picdem::driver::RunRecord record;
   std::unique_ptr<picdem::coupling::Simulation> sim;
+  std::unique_ptr<picdem::run::Run> steps;  // the time loop, output and checkpoints of sim
   void finish(const std::string& status, int code, const std::string& message) {
     if (sim) {
       const auto split = sim->grid_split();
@@ -108,19 +110,19 @@ int run_case(const picdem::core::Comm& comm, const Args& args, const picdem::cor
                                ? picdem::io::latest_checkpoint(comm, checkpoints.directory)
                                : args.restart;
   run.record.start(out, args.case_file, params, from);
-  if (from.empty()) {
-    run.sim = std::make_unique<picdem::coupling::Simulation>(comm, params, out);
-  } else {
-    run.sim = std::make_unique<picdem::coupling::Simulation>(comm, params, "");
-    run.sim->restart_from(from, out);
-  }
+  run.sim = std::make_unique<picdem::coupling::Simulation>(comm, params);
+  run.steps = std::make_unique<picdem::run::Run>(*run.sim);
+  if (from.empty())
+    run.steps->open_output(out);
+  else
+    run.steps->restart_from(from, out);
   run.record.first_step(run.sim->step_count());
   const auto split = run.sim->grid_split();
   run.record.split(split.x_cuts, split.z_cuts);
   picdem::io::install_stop_signal_handlers();
-  run.sim->enable_checkpoints(checkpoints.directory);
-  run.sim->run(args.max_steps);
-  run.finish(run.sim->stopped_by_signal() ? "stopped_by_signal" : "completed", 0, "");
+  run.steps->enable_checkpoints(checkpoints.directory);
+  run.steps->run(args.max_steps);
+  run.finish(run.steps->stopped_by_signal() ? "stopped_by_signal" : "completed", 0, "");
   return 0;
 }
 

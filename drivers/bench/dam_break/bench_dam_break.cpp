@@ -42,7 +42,7 @@ double fluid_cells(const picdem::core::Comm& comm, const picdem::coupling::Simul
 // Runs to t0, then times `steps` steps and prints the figures under `label`.
 void measure(const picdem::core::Comm& comm, const std::string& label,
              const picdem::core::Params& params, int steps, double t0) {
-  picdem::coupling::Simulation sim(comm, params, "");
+  picdem::coupling::Simulation sim(comm, params);
   for (int s = 0; s < 5 || sim.time() < t0; ++s) sim.step();
   picdem::core::reset_timers();
   long long its = 0, reused = 0;

@@ -1,7 +1,6 @@
 #include "picdem/coupling/simulation.hpp"
 
 #include "body_forces.hpp"
-#include "checkpoint_state.hpp"
 #include "rebalance.hpp"
 #include "step_phases.hpp"
 #include "viscous_bodies.hpp"
@@ -15,7 +14,6 @@
 #include "picdem/core/error.hpp"
 #include "picdem/core/log.hpp"
 #include "picdem/core/timer.hpp"
-#include "picdem/coupling/output.hpp"
 #include "picdem/coupling/solids_in_fluid.hpp"
 #include "picdem/dem/dem_solver.hpp"
 #include "picdem/dem/parameters.hpp"
@@ -23,8 +21,6 @@
 #include "picdem/fluid/pressure_solver.hpp"
 #include "picdem/geometry/obstacles.hpp"
 #include "picdem/grid/field.hpp"
-#include "picdem/io/checkpoint_files.hpp"
-#include "picdem/io/checkpoint_grid.hpp"
 #include "picdem/particles/particles.hpp"
 
 namespace picdem::coupling {
@@ -75,12 +71,6 @@ struct Simulation::Impl {
   ViscousExchange viscous;                       // the last step's viscous loads (implicit scheme)
   std::vector<core::SolidLoads> obstacle_loads;  // J p + F_q of the last step, every obstacle
 
-  // output and checkpoints
-  std::unique_ptr<Output> output;
-  io::CheckpointConfig checkpoint;  // directory empty: no checkpoints
-  bool restarted = false;           // the state came from a checkpoint (no initial frame)
-  bool stopped_by_signal = false;
-
   Layout layout() const { return {*decomp, *halo, comm}; }
   bool weighted() const { return params.string("grid/decomposition") == "weighted"; }
 };
@@ -123,7 +113,7 @@ void adopt_cuts(Simulation::Impl& m, const grid::Cuts& cuts) {
 // grid/decomposition = weighted: cut lines balancing the particles' work (rebalance.hpp), taken
 // when they lighten the heaviest block by grid/rebalance_gain or more. A function of the particles
 // and the present cuts only, both of which a checkpoint keeps.
-void rebalance(Simulation::Impl& m) {
+void rebalance_cuts(Simulation::Impl& m) {
   if (!m.weighted() || m.comm.size() == 1 || !m.set.has_fluid) return;
   const auto work = cell_work(*m.decomp, m.particles);
   const auto cuts =
@@ -147,8 +137,7 @@ void rebalance(Simulation::Impl& m) {
 
 }  // namespace
 
-Simulation::Simulation(core::Comm comm, core::Params params, std::string output_dir)
-    : m_(std::make_unique<Impl>()) {
+Simulation::Simulation(core::Comm comm, core::Params params) : m_(std::make_unique<Impl>()) {
   Impl& m = *m_;
   m.comm = comm;
   m.params = params;
@@ -182,9 +171,8 @@ Simulation::Simulation(core::Comm comm, core::Params params, std::string output_
           d, params, fluid::PressureSolver::Equation::DensityCorrection);
     m.fluid = fluid::FluidState(d);
     m.particles = seed_water(m);
-    rebalance(m);
+    rebalance_cuts(m);
   }
-  if (!output_dir.empty()) m.output = std::make_unique<Output>(comm, params, d, output_dir);
 }
 
 Simulation::~Simulation() = default;
@@ -251,7 +239,7 @@ void Simulation::step() {
   Impl& m = *m_;
   const StepSettings& set = m.set;
   const long long every = m.params.integer("grid/rebalance_interval");
-  if (every > 0 && m.step > 0 && m.step % every == 0) rebalance(m);
+  if (every > 0 && m.step > 0 && m.step % every == 0) rebalance_cuts(m);
   const Layout L = m.layout();
   fluid::FluidState* fluid = set.has_fluid ? &m.fluid : nullptr;
   const double speed = max_particle_speed(m.particles, m.comm);
@@ -320,104 +308,40 @@ std::vector<BodyForces> Simulation::body_forces() const {
   return coupling::body_forces(fluid_loads(), m_->obstacle_loads, m_->viscous);
 }
 
-void Simulation::run(long long max_steps) {
-  Impl& s = *m_;
-  core::Progress progress(s.comm, s.t, s.set.t_end, s.params.real("output/progress_seconds"));
-  if (s.output && !s.restarted)
-    s.output->frame(s.t, s.step, s.diag, s.particles, s.fluid.p, s.fluid.cells, s.dem.get(),
-                    s.obstacles, true);
-  const io::CheckpointConfig& ck = s.checkpoint;
-  double wall_last_checkpoint = core::wall_seconds();
-  long long last_checkpoint_step = s.restarted ? s.step : -1;
-  auto checkpoint = [&] {
-    Simulation::write_checkpoint(ck.directory + "/" + io::checkpoint_file_name(s.step));
-    io::prune_checkpoints(s.comm, ck.directory, ck.keep);
-    wall_last_checkpoint = core::wall_seconds();
-    last_checkpoint_step = s.step;
-  };
-  s.stopped_by_signal = false;
-  while (s.t < s.set.t_end * (1.0 - 1e-12) && (max_steps <= 0 || s.step < max_steps)) {
-    step();
-    check_step(s.diag, s.set.spec.h, s.set.has_fluid, s.dem.get(), s.comm);
-    if (s.output) {
-      s.output->record(s.diag);
-      if (s.output->forces_due(s.t)) s.output->forces(s.t, body_forces());
-      s.output->frame(s.t, s.step, s.diag, s.particles, s.fluid.p, s.fluid.cells, s.dem.get(),
-                      s.obstacles, false);
-    }
-    progress.report(s.t, s.step, s.diag.dt, s.diag.ppe_iterations);
-    const bool stop = s.comm.any(io::stop_signal_received());
-    if (!ck.directory.empty()) {
-      const bool by_steps = ck.every_steps > 0 && s.step % ck.every_steps == 0;
-      const bool by_time =
-          ck.every_seconds > 0.0 &&
-          s.comm.max(core::wall_seconds() - wall_last_checkpoint) >= ck.every_seconds;
-      if (stop || by_steps || by_time) checkpoint();
-    }
-    if (stop) {
-      core::log(s.comm,
-                "picdem: stop signal at step " + std::to_string(s.step) +
-                    (ck.directory.empty() ? ", no checkpoint directory" : ": checkpoint written") +
-                    ", stopping");
-      s.stopped_by_signal = true;
-      return;
-    }
-  }
-  progress.report(s.t, s.step, s.diag.dt, s.diag.ppe_iterations, true);
-  if (!ck.directory.empty() && ck.at_end && last_checkpoint_step != s.step) checkpoint();
-  if (s.output)
-    s.output->finish(s.t, s.step, s.diag, s.particles, s.fluid.p, s.fluid.cells, s.dem.get(),
-                     s.obstacles);
+const std::vector<geometry::Obstacle>& Simulation::obstacles() const {
+  return m_->obstacles;
 }
 
-namespace {
-CheckpointParts checkpoint_parts(Simulation::Impl& s) {
+bool Simulation::has_fluid() const {
+  return m_->set.has_fluid;
+}
+
+Simulation::Modules Simulation::modules() {
+  Impl& s = *m_;
   return {s.comm,     s.params, *s.decomp, s.particles, s.set.has_fluid ? &s.fluid : nullptr,
           s.dem.get()};
 }
-}  // namespace
 
-void Simulation::enable_checkpoints(const std::string& directory) {
+void Simulation::resume(double t, long long step, const Diagnostics& diag) {
+  m_->t = t, m_->step = step, m_->diag = diag;
+}
+
+// weighted: the file's cut lines on the same rank count (they came from the state of the last
+// rebalance, which the file does not hold); otherwise the caller rebalances after the restore
+bool Simulation::take_cuts_of(const std::vector<core::IndexBox>& boxes) {
   Impl& s = *m_;
-  s.checkpoint = io::checkpoint_config_from(s.params, "");
-  s.checkpoint.directory = directory;
-  if (!directory.empty()) io::open_checkpoint_directory(s.comm, directory, !s.restarted);
+  if (!s.weighted() || s.comm.size() == 1 || !s.set.has_fluid) return false;
+  const auto cuts = grid::cuts_of_boxes(s.set.spec, boxes);
+  const long long rx = s.params.integer("grid/ranks_x"), rz = s.params.integer("grid/ranks_z");
+  const bool fit = boxes.size() == static_cast<std::size_t>(s.comm.size()) && !cuts.xs.empty() &&
+                   (rx == 0 || rx + 1 == static_cast<long long>(cuts.xs.size())) &&
+                   (rz == 0 || rz + 1 == static_cast<long long>(cuts.zs.size()));
+  if (fit) adopt_cuts(s, cuts);
+  return fit;
 }
 
-void Simulation::restart_from(const std::string& checkpoint, const std::string& output_dir) {
-  Impl& s = *m_;
-  // weighted: the file's cut lines on the same rank count (they came from the state of the last
-  // rebalance, which the file does not hold); otherwise new ones from the restored particles
-  bool adopted = false;
-  if (s.weighted() && s.comm.size() > 1 && s.set.has_fluid) {
-    const auto boxes = io::checkpoint_cell_boxes(s.comm, checkpoint);
-    const auto cuts = grid::cuts_of_boxes(s.set.spec, boxes);
-    const long long rx = s.params.integer("grid/ranks_x"), rz = s.params.integer("grid/ranks_z");
-    adopted = boxes.size() == static_cast<std::size_t>(s.comm.size()) && !cuts.xs.empty() &&
-              (rx == 0 || rx + 1 == static_cast<long long>(cuts.xs.size())) &&
-              (rz == 0 || rz + 1 == static_cast<long long>(cuts.zs.size()));
-    if (adopted) adopt_cuts(s, cuts);
-  }
-  const CheckpointHeader head = read_checkpoint(checkpoint_parts(s), checkpoint);
-  s.t = head.t, s.step = head.step, s.diag = head.diag;
-  if (!adopted) rebalance(s);
-  const Output::Mark& mark = head.mark;
-  s.restarted = true;
-  s.output.reset();
-  if (!output_dir.empty())
-    s.output = std::make_unique<Output>(s.comm, s.params, *s.decomp, output_dir, &mark, s.t);
-  core::log(s.comm, "picdem: restarted from " + checkpoint + " at step " + std::to_string(s.step) +
-                        ", t = " + std::to_string(s.t) + " s");
-}
-
-void Simulation::write_checkpoint(const std::string& path) const {
-  Impl& s = *m_;  // the parts are only read
-  const CheckpointHeader head{s.t, s.step, s.diag, s.output ? s.output->mark() : Output::Mark{}};
-  coupling::write_checkpoint(checkpoint_parts(s), head, path);
-}
-
-bool Simulation::stopped_by_signal() const {
-  return m_->stopped_by_signal;
+void Simulation::rebalance() {
+  rebalance_cuts(*m_);
 }
 
 }  // namespace picdem::coupling

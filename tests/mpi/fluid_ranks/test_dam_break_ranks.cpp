@@ -28,7 +28,7 @@ RunResult run_case_on(int ranks, const std::string& file, const std::vector<std:
   test_support::on_first_ranks(ranks, [&](MPI_Comm sub) {
     core::Comm comm(sub);
     const auto params = test_support::load_case(comm, file, overrides);
-    coupling::Simulation sim(comm, params, "");
+    coupling::Simulation sim(comm, params);
     for (int n = 0; n < steps; ++n) sim.step();
     out.d = sim.diagnostics();
     if (sim.dem())

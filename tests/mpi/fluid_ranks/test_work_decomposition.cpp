@@ -48,7 +48,7 @@ RunResult run_on(int ranks, int steps) {
     core::Comm comm(sub);
     const auto params =
         test_support::load_case(comm, "cases/dam_break_cylinders_6_layers/case.yaml", o);
-    coupling::Simulation sim(comm, params, "");
+    coupling::Simulation sim(comm, params);
     auto holdings = [&](std::vector<long long>& p, std::vector<long long>& s) {
       p = gathered(sub, static_cast<long long>(sim.particles().size()));
       s = gathered(sub, static_cast<long long>(sim.dem()->owned().size()));

@@ -35,7 +35,7 @@ std::vector<double> run_on(int ranks, const std::vector<std::string>& split) {
                                "grid/decomposition=uniform"};
     o.insert(o.end(), split.begin(), split.end());
     const auto params = test_support::load_case(comm, "cases/neutral_disk/case.yaml", o);
-    coupling::Simulation sim(comm, params, "");
+    coupling::Simulation sim(comm, params);
     for (int n = 0; n < 20; ++n) sim.step();
     const auto st = sim.dem()->gather_all().at(0);
     const auto& v = sim.viscous_loads().solids.at(0);

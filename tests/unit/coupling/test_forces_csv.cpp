@@ -13,6 +13,7 @@
 
 #include "case_loader.hpp"
 #include "picdem/coupling/simulation.hpp"
+#include "picdem/run/run.hpp"
 
 using namespace picdem;
 
@@ -52,8 +53,10 @@ Csv run_and_read(const core::Comm& comm, const std::string& name, const std::str
   settings.insert(settings.end(), {"output/paraview=false", "output/png=false"});
   const auto params = test_support::load_case(comm, case_path, settings);
   {
-    coupling::Simulation sim(comm, params, dir);
-    sim.run(steps);
+    coupling::Simulation sim(comm, params);
+    run::Run run(sim);
+    run.open_output(dir);
+    run.run(steps);
   }
   comm.barrier();
   return read_csv(dir + "/forces.csv");

@@ -10,6 +10,7 @@
 #include "picdem/coupling/simulation.hpp"
 #include "picdem/dem/dem_solver.hpp"
 #include "picdem/fluid/fluid_state.hpp"
+#include "picdem/run/run.hpp"
 
 using namespace picdem;
 
@@ -27,7 +28,7 @@ TEST(Archimedes, FloatingBoxSettlesAtItsDraft) {
   core::Comm comm;
   const auto params = test_support::load_case(comm, "cases/floating_box/case.yaml");
   test_support::print_resolution(comm, "Archimedes.FloatingBoxSettlesAtItsDraft", params);
-  coupling::Simulation sim(comm, params, "");
+  coupling::Simulation sim(comm, params);
   const double h = params.real("grid/cell_size"), H = 0.02, W = 0.04, expected = 0.5 * H;
   const double length = params.real("grid/length"), t_end = params.real("time/end");
   double sum = 0.0, sum2 = 0.0, worst_tilt = 0.0;
@@ -70,7 +71,7 @@ TEST(Archimedes, FloatingDiskHalfSubmerged) {
   core::Comm comm;
   const auto params = test_support::load_case(comm, "cases/floating_disk/case.yaml");
   test_support::print_resolution(comm, "Archimedes.FloatingDiskHalfSubmerged", params);
-  coupling::Simulation sim(comm, params, "");
+  coupling::Simulation sim(comm, params);
   const double r = 0.01, t_end = params.real("time/end");
   double sum = 0.0;
   int n = 0;
@@ -96,7 +97,7 @@ TEST(Archimedes, NeutralDiskStaysPutAndLoadMatchesPressureIntegral) {
   const auto params = test_support::load_case(comm, "cases/neutral_disk/case.yaml");
   test_support::print_resolution(
       comm, "Archimedes.NeutralDiskStaysPutAndLoadMatchesPressureIntegral", params);
-  coupling::Simulation sim(comm, params, "");
+  coupling::Simulation sim(comm, params);
   const auto start = sim.dem()->gather_all().at(0);
   const double t_end = params.real("time/end");
   double excursion = 0.0;
@@ -143,8 +144,8 @@ TEST(FixedObstacle, StillWaterStaysStillAndHydrostatic) {
   core::Comm comm;
   const auto params = test_support::load_case(comm, "cases/still_tank_obstacle/case.yaml");
   test_support::print_resolution(comm, "FixedObstacle.StillWaterStaysStillAndHydrostatic", params);
-  coupling::Simulation sim(comm, params, "");
-  sim.run();
+  coupling::Simulation sim(comm, params);
+  run::Run(sim).run();
   const double rho = 1000.0, g = 9.81, level = 0.1, h = params.real("grid/cell_size");
   const double grid_speed = sim.fluid().max_grid_speed();  // collective: on every rank
   if (comm.is_root())

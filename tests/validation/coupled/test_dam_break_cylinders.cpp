@@ -35,7 +35,7 @@ Outcome run(int layers, double beta) {
        "time/dt_max=0.001"});
   test_support::print_resolution(comm, "DamBreakCylinders " + std::to_string(layers) + " layers",
                                  params);
-  coupling::Simulation sim(comm, params, "");
+  coupling::Simulation sim(comm, params);
   const double L = params.real("grid/length"), r = 0.005, gap = 2 * h;
   Outcome o;
   double v0 = -1.0;

@@ -37,7 +37,7 @@ TEST(EllipsesSettling, HeavyOnesComeToRestAndTheLightOneFloatsHalfSubmerged) {
   const auto params = test_support::load_case(comm, "cases/ellipses_settling/case.yaml");
   test_support::print_resolution(
       comm, "EllipsesSettling.HeavyOnesComeToRestAndTheLightOneFloatsHalfSubmerged", params);
-  coupling::Simulation sim(comm, params, "");
+  coupling::Simulation sim(comm, params);
   const double h = params.real("grid/cell_size"), gap = params.real("dem/gap_cells") * h;
   const double t_end = params.real("time/end"), length = params.real("grid/length");
   const double a = 0.014, b = 0.007, fa = 0.016, fb = 0.008;  // heavy, floater (case.yaml)

@@ -43,7 +43,7 @@ Balance sinking_disk(const core::Comm& comm, const char* name, std::vector<std::
   settings.insert(settings.end(), more.begin(), more.end());
   const auto params = test_support::load_case(comm, "cases/neutral_disk/case.yaml", settings);
   test_support::print_resolution(comm, name, params);
-  coupling::Simulation sim(comm, params, "");
+  coupling::Simulation sim(comm, params);
   const double h = params.real("grid/cell_size"), rho = 1000.0;
   const core::Vec2 g{0.0, -9.81};
   const double particle_mass = rho * h * h / 4.0;  // 2 x 2 particles per full cell

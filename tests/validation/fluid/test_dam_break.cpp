@@ -43,7 +43,7 @@ TEST(DamBreak, SurgeFrontAgainstMartinMoyce) {
   const auto params = test_support::load_case(comm, "cases/dam_break/case.yaml", {"time/end=0.19"});
   test_support::print_resolution(comm, "DamBreak.SurgeFrontAgainstMartinMoyce", params);
   ASSERT_GE(a / params.real("grid/cell_size"), 20.0 - 1e-9);
-  coupling::Simulation sim(comm, params, "");
+  coupling::Simulation sim(comm, params);
   std::vector<double> tau{0.0}, front{1.0};
   double v0 = -1.0, worst_volume = 0.0;
   while (sim.time() < 0.19 - 1e-12) {

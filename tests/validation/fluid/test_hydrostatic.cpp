@@ -7,6 +7,7 @@
 #include "case_loader.hpp"
 #include "picdem/coupling/simulation.hpp"
 #include "picdem/fluid/fluid_state.hpp"
+#include "picdem/run/run.hpp"
 
 using namespace picdem;
 
@@ -15,8 +16,8 @@ TEST(Hydrostatic, PressureAndSpuriousCurrentsAfterOneSecond) {
   const auto params = test_support::load_case(comm, "cases/hydrostatic_tank/case.yaml");
   test_support::print_resolution(comm, "Hydrostatic.PressureAndSpuriousCurrentsAfterOneSecond",
                                  params);
-  coupling::Simulation sim(comm, params, "");
-  sim.run();
+  coupling::Simulation sim(comm, params);
+  run::Run(sim).run();
   ASSERT_NEAR(sim.time(), 1.0, 1e-12);
 
   const double rho = params.real("fluid/density"), g = 9.81, level = 0.1;

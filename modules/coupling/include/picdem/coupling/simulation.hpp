@@ -1,6 +1,7 @@
 #pragma once
-// The coupled PIC-DEM run: owns every module and advances them one step at a time in the order of
-// the paper's Fig. 4. Nothing here includes Trilinos or CGAL.
+// The coupled PIC-DEM step: owns every module and advances them one step at a time in the order
+// of the paper's Fig. 4. The run around it (time loop, output, checkpoints) is run/run.hpp.
+// Nothing here includes Trilinos or CGAL.
 #include <memory>
 #include <string>
 #include <vector>
@@ -18,6 +19,12 @@ struct ParticleSet;
 }
 namespace picdem::dem {
 class DemSolver;
+}
+namespace picdem::grid {
+class Decomposition;
+}
+namespace picdem::geometry {
+struct Obstacle;
 }
 
 namespace picdem::coupling {
@@ -68,28 +75,37 @@ struct BodyForces {
 
 class Simulation {
  public:
-  /// `output_dir` empty: no files are written (tests).
-  Simulation(core::Comm comm, core::Params params, std::string output_dir);
+  /// The modules of the case, the water seeded; no files are written (the run layer,
+  /// run/run.hpp, adds output and checkpoints).
+  Simulation(core::Comm comm, core::Params params);
   ~Simulation();
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
 
-  /// Runs to time/end (or `max_steps` steps if > 0), writing output on the way.
-  void run(long long max_steps = 0);
   /// One coupled step.
   void step();
 
-  /// run() writes checkpoints to `directory` (checkpoint/every_steps, every_seconds, at_end, and
-  /// on SIGTERM / SIGUSR1, after which run() returns early); a fresh run first removes the old
-  /// checkpoints there. Empty: none.
-  void enable_checkpoints(const std::string& directory);
-  /// Collective: continues from a checkpoint file (checkpoint.hpp); `output_dir` non-empty: the
-  /// output there is continued. Throws core::InputError for a bad or mismatched file.
-  void restart_from(const std::string& checkpoint, const std::string& output_dir);
-  /// Collective: writes a checkpoint of the current state as `path`.
-  void write_checkpoint(const std::string& path) const;
-  /// True when the last run() stopped early on a stop signal.
-  bool stopped_by_signal() const;
+  /// The modules whose state a checkpoint holds (saved and restored by each module:
+  /// particles/checkpoint.hpp, fluid/checkpoint.hpp, dem/checkpoint.hpp). fluid: nullptr in a
+  /// case without water; dem: nullptr without solids.
+  struct Modules {
+    const core::Comm& comm;
+    const core::Params& params;
+    const grid::Decomposition& decomposition;
+    particles::ParticleSet& particles;
+    fluid::FluidState* fluid;
+    dem::DemSolver* dem;
+  };
+  Modules modules();
+  /// After a restore of the modules: the clock and the last step's records of the checkpoint.
+  void resume(double t, long long step, const Diagnostics& diag);
+  /// Before a restore: grid/decomposition = weighted on more than one rank with water takes the
+  /// cut lines of a checkpoint's owned cell boxes (io::checkpoint_cell_boxes) when they fit this
+  /// run (rank count, grid/ranks_x, grid/ranks_z). Returns whether it did.
+  bool take_cuts_of(const std::vector<core::IndexBox>& cell_boxes);
+  /// grid/decomposition = weighted: new cut lines from the particles when they lighten the
+  /// heaviest block by grid/rebalance_gain (also called every grid/rebalance_interval steps).
+  void rebalance();
 
   /// The grid's split over the ranks now, as strip starts {0, ..., nx} along x and {0, ..., nz}
   /// along z (ranks along x = x_cuts.size() - 1); weighted cuts move at each rebalance.
@@ -113,6 +129,9 @@ class Simulation {
   const particles::ParticleSet& particles() const;
   /// The DEM solver, or nullptr when the case has no solids.
   const dem::DemSolver* dem() const;
+  /// The fixed obstacles of the case.
+  const std::vector<geometry::Obstacle>& obstacles() const;
+  bool has_fluid() const;
   /// The current collision and fluid loads on every solid (ordered by id), on every rank.
   std::vector<core::SolidLoads> fluid_loads() const;
   /// The viscous loads of the last step, given to the solids in eq. 6 (empty: explicit scheme).

@@ -2,39 +2,27 @@
 // The run's state <-> a checkpoint file (layout in doc/restart.md). Each module saves and
 // restores its own state (particles/checkpoint.hpp, fluid/checkpoint.hpp, dem/checkpoint.hpp,
 // on the same or another rank layout); this file writes the run's header (clock, diagnostics,
-// output marks, case) and calls them in order. Private to the coupling module.
+// output marks, case) and calls them in order. Private to the run module.
 #include <string>
 #include <vector>
 
 #include "picdem/core/comm.hpp"
 #include "picdem/core/params.hpp"
-#include "picdem/coupling/output.hpp"
 #include "picdem/coupling/simulation.hpp"
 #include "picdem/dem/dem_solver.hpp"
-#include "picdem/fluid/fluid_state.hpp"
-#include "picdem/grid/grid.hpp"
-#include "picdem/particles/particle_set.hpp"
+#include "picdem/run/output.hpp"
 
-namespace picdem::coupling {
+namespace picdem::run {
 
 /// The run's clock and records, stored as attributes beside the modules' arrays.
 struct CheckpointHeader {
   double t = 0.0;
   long long step = 0;
-  Diagnostics diag;
+  coupling::Diagnostics diag;
   Output::Mark mark;
 };
 
-/// The modules whose state a checkpoint holds. fluid: nullptr in a case without water;
-/// dem: nullptr without solids.
-struct CheckpointParts {
-  const core::Comm& comm;
-  const core::Params& params;
-  const grid::Decomposition& decomposition;
-  particles::ParticleSet& particles;
-  fluid::FluidState* fluid;
-  dem::DemSolver* dem;
-};
+using CheckpointParts = coupling::Simulation::Modules;
 
 /// Collective: writes `head` and the parts to `path` (via path.tmp). Environment variable
 /// PICDEM_CHECKPOINT_PAUSE_AT_STEP=N (tests): at step N the writer stops for 60 s in the middle of
@@ -51,7 +39,7 @@ CheckpointHeader read_checkpoint(const CheckpointParts& parts, const std::string
 /// when the step blew up: a particle moved more than 2 h (CFL far exceeded), or a solid's real
 /// boundary overlaps another solid, a wall or an obstacle (DEM overlap delta beyond the
 /// imaginary gap, eq. 19).
-void check_step(const Diagnostics& g, double h, bool has_fluid, const dem::DemSolver* dem,
+void check_step(const coupling::Diagnostics& g, double h, bool has_fluid, const dem::DemSolver* dem,
                 const core::Comm& comm);
 
-}  // namespace picdem::coupling
+}  // namespace picdem::run

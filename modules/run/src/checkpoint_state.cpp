@@ -14,11 +14,11 @@
 #include "picdem/io/checkpoint_grid.hpp"
 #include "picdem/particles/checkpoint.hpp"
 
-namespace picdem::coupling {
+namespace picdem::run {
 
 // Layout (doc/restart.md); each module writes and reads its own group:
 //   attributes: format_version, code_version, case_yaml, t, step, ranks, has_fluid,
-//               diagnostics (the scalars of Diagnostics in declaration order),
+//               diagnostics (the scalars of coupling::Diagnostics in declaration order),
 //               diagnostics_solids_in_box, diagnostics_levels (when there are probes),
 //               output_next_frame, output_frames, output_last_frame_step
 //   particles/<name>: particles/checkpoint.hpp, every rank's particles in their order
@@ -99,10 +99,10 @@ CheckpointHeader read_header(const io::CheckpointReader& in, const CheckpointPar
     head.t = in.attribute_double("t");
     head.step = in.attribute_int("step");
     const auto v = in.attribute_doubles("diagnostics");
-    if (v.size() != Diagnostics::scalar_names().size())
+    if (v.size() != coupling::Diagnostics::scalar_names().size())
       throw core::InputError(where + ": attribute 'diagnostics' has " + std::to_string(v.size()) +
                              " values, expected " +
-                             std::to_string(Diagnostics::scalar_names().size()));
+                             std::to_string(coupling::Diagnostics::scalar_names().size()));
     head.diag.set_scalars(v);
     if (in.has_attribute("diagnostics_solids_in_box"))
       head.diag.solids_in_box = in.attribute_int("diagnostics_solids_in_box");
@@ -129,7 +129,7 @@ CheckpointHeader read_checkpoint(const CheckpointParts& parts, const std::string
   return head;
 }
 
-void check_step(const Diagnostics& g, double h, bool has_fluid, const dem::DemSolver* dem,
+void check_step(const coupling::Diagnostics& g, double h, bool has_fluid, const dem::DemSolver* dem,
                 const core::Comm& comm) {
   // CFL far exceeded: |v| dt > 2 h for the fastest particle.
   if (has_fluid && g.max_speed * g.dt > 2.0 * h) {
@@ -157,4 +157,4 @@ void check_step(const Diagnostics& g, double h, bool has_fluid, const dem::DemSo
   if (bad >= 0) throw core::SolverError(comm.broadcast(mine, static_cast<int>(bad)));
 }
 
-}  // namespace picdem::coupling
+}  // namespace picdem::run

@@ -9,20 +9,14 @@
 #include "picdem/core/comm.hpp"
 #include "picdem/core/params.hpp"
 #include "picdem/coupling/simulation.hpp"
-#include "picdem/fluid/fluid.hpp"
-#include "picdem/geometry/cut_cells.hpp"
-#include "picdem/grid/field.hpp"
-#include "picdem/particles/particles.hpp"
+#include "picdem/grid/grid.hpp"
 
-namespace picdem::dem {
-class DemSolver;
-}
 namespace picdem::io {
 class FrameWriter;
 class CsvWriter;
 }  // namespace picdem::io
 
-namespace picdem::coupling {
+namespace picdem::run {
 
 class Output {
  public:
@@ -42,25 +36,19 @@ class Output {
   Mark mark() const { return {next_frame_, frames_, last_frame_step_}; }
 
   /// One row of timeseries.csv.
-  void record(const Diagnostics& diag);
+  void record(const coupling::Diagnostics& diag);
   /// True when forces.csv takes the rows of time t (output/forces_interval; 0: every step).
   bool forces_due(double t) const;
   /// The rows of forces.csv at time t (rank 0 writes).
-  void forces(double t, const std::vector<BodyForces>& rows);
-  /// Writes a frame when an output time is reached (or `force`).
-  void frame(double t, long long step, const Diagnostics& diag, const particles::ParticleSet& ps,
-             const grid::CellField& p, const fluid::CellStates& cells, const dem::DemSolver* dem,
-             const std::vector<geometry::Obstacle>& obstacles, bool force);
+  void forces(double t, const std::vector<coupling::BodyForces>& rows);
+  /// Writes a frame of `sim`'s state when an output time is reached (or `force`).
+  void frame(const coupling::Simulation& sim, bool force);
   /// The last state as a frame (unless the last frame holds it), the movie when output/movie
   /// asks for it, the timer table; prints where everything is.
-  void finish(double t, long long step, const Diagnostics& diag, const particles::ParticleSet& ps,
-              const grid::CellField& p, const fluid::CellStates& cells, const dem::DemSolver* dem,
-              const std::vector<geometry::Obstacle>& obstacles);
+  void finish(const coupling::Simulation& sim);
 
  private:
-  void write_frame(double t, long long step, const particles::ParticleSet& ps,
-                   const grid::CellField& p, const fluid::CellStates& cells,
-                   const dem::DemSolver* dem, const std::vector<geometry::Obstacle>& obstacles);
+  void write_frame(const coupling::Simulation& sim);
 
   core::Comm comm_;
   core::Params params_;
@@ -74,4 +62,4 @@ class Output {
   double forces_interval_ = 0.0, next_forces_ = 0.0;
 };
 
-}  // namespace picdem::coupling
+}  // namespace picdem::run

@@ -1,4 +1,4 @@
-#include "picdem/coupling/output.hpp"
+#include "picdem/run/output.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -9,14 +9,16 @@
 #include "picdem/core/log.hpp"
 #include "picdem/core/timer.hpp"
 #include "picdem/dem/dem_solver.hpp"
+#include "picdem/fluid/fluid_state.hpp"
 #include "picdem/geometry/obstacles.hpp"
 #include "picdem/geometry/outline.hpp"
 #include "picdem/io/checkpoint_files.hpp"
 #include "picdem/io/csv_writer.hpp"
 #include "picdem/io/frame_writer.hpp"
 #include "picdem/io/render.hpp"
+#include "picdem/particles/particle_set.hpp"
 
-namespace picdem::coupling {
+namespace picdem::run {
 
 namespace fs = std::filesystem;
 
@@ -71,7 +73,7 @@ Output::Output(core::Comm comm, const core::Params& params, const grid::Decompos
     frames_writer_ = std::make_unique<io::FrameWriter>(
         dir_, d, append, resume ? resume->last_frame_step : std::numeric_limits<long long>::max(),
         io::code_version());
-  std::vector<std::string> columns = Diagnostics::scalar_names();
+  std::vector<std::string> columns = coupling::Diagnostics::scalar_names();
   const auto probes = params.reals("output/level_probes");
   for (std::size_t n = 0; n < probes.size(); ++n)
     columns.push_back("level_" + std::to_string(n + 1));
@@ -95,7 +97,7 @@ Output::Output(core::Comm comm, const core::Params& params, const grid::Decompos
 
 Output::~Output() = default;
 
-void Output::record(const Diagnostics& g) {
+void Output::record(const coupling::Diagnostics& g) {
   std::vector<double> row = g.scalars();
   row.insert(row.end(), g.levels.begin(), g.levels.end());
   if (!params_.reals("output/solid_count_box").empty())
@@ -107,7 +109,7 @@ bool Output::forces_due(double t) const {
   return t >= next_forces_ - 1e-12 * std::max(1.0, forces_interval_);
 }
 
-void Output::forces(double t, const std::vector<BodyForces>& rows) {
+void Output::forces(double t, const std::vector<coupling::BodyForces>& rows) {
   for (const auto& r : rows)
     forces_->row({t, static_cast<double>(r.id), r.obstacle ? 1.0 : 0.0, r.pressure.x, r.pressure.z,
                   r.viscous.x, r.viscous.z, r.torque_pressure, r.torque_viscous});
@@ -115,21 +117,21 @@ void Output::forces(double t, const std::vector<BodyForces>& rows) {
     next_forces_ = forces_interval_ * std::floor(t / forces_interval_ + 1e-9) + forces_interval_;
 }
 
-void Output::frame(double t, long long step, const Diagnostics&, const particles::ParticleSet& ps,
-                   const grid::CellField& p, const fluid::CellStates& cells,
-                   const dem::DemSolver* dem, const std::vector<geometry::Obstacle>& obstacles,
-                   bool force) {
+void Output::frame(const coupling::Simulation& sim, bool force) {
+  const double t = sim.time();
   if (!force && t < next_frame_ - 1e-12 * std::max(1.0, interval_)) return;
-  write_frame(t, step, ps, p, cells, dem, obstacles);
+  write_frame(sim);
   ++frames_;
   next_frame_ = interval_ * std::floor(t / interval_ + 1e-9) + interval_;
 }
 
-void Output::write_frame(double t, long long step, const particles::ParticleSet& ps,
-                         const grid::CellField& p, const fluid::CellStates& cells,
-                         const dem::DemSolver* dem,
-                         const std::vector<geometry::Obstacle>& obstacles) {
+void Output::write_frame(const coupling::Simulation& sim) {
   core::ScopedTimer timer("output");
+  const double t = sim.time();
+  const long long step = sim.step_count();
+  const particles::ParticleSet& ps = sim.particles();
+  const dem::DemSolver* dem = sim.dem();
+  const std::vector<geometry::Obstacle>& obstacles = sim.obstacles();
   const auto& spec = decomp_.spec();
   io::PointSet points;
   points.x = ps.x;
@@ -164,8 +166,12 @@ void Output::write_frame(double t, long long step, const particles::ParticleSet&
   if (frames_writer_) {
     const fluid::CellStates air(decomp_, grid::Stagger::Cell, 0);
     io::CellArrays arrays;
-    if (!p.data().empty()) arrays.reals["pressure"] = &p;
-    arrays.codes["cell_state"] = cells.data().empty() ? &air : &cells;
+    if (sim.has_fluid()) {  // the fluid's pressure and cell states; without water, air
+      arrays.reals["pressure"] = &sim.fluid().p;
+      arrays.codes["cell_state"] = &sim.fluid().cells;
+    } else {
+      arrays.codes["cell_state"] = &air;
+    }
     arrays.units = {{"pressure", "Pa"}, {"cell_state", "code"}};
     frames_writer_->write(t, step, arrays, points, solid_lines, obstacle_lines);
   }
@@ -178,11 +184,10 @@ void Output::write_frame(double t, long long step, const particles::ParticleSet&
   }
 }
 
-void Output::finish(double t, long long step, const Diagnostics&, const particles::ParticleSet& ps,
-                    const grid::CellField& p, const fluid::CellStates& cells,
-                    const dem::DemSolver* dem, const std::vector<geometry::Obstacle>& obstacles) {
+void Output::finish(const coupling::Simulation& sim) {
   // The last state as a frame unless the last frame already holds this step.
-  if (step != last_frame_step_) write_frame(t, step, ps, p, cells, dem, obstacles);
+  const long long step = sim.step_count();
+  if (step != last_frame_step_) write_frame(sim);
   std::string movie;
   if (params_.boolean("output/png") && params_.boolean("output/movie") && comm_.is_root()) {
     const auto m = io::make_movie(dir_ + "/pictures", step, params_.real("output/movie_fps"));
@@ -198,4 +203,4 @@ void Output::finish(double t, long long step, const Diagnostics&, const particle
                        "solids.csv, forces.csv, case_resolved.yaml, timers.txt");
 }
 
-}  // namespace picdem::coupling
+}  // namespace picdem::run
