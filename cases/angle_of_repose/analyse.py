@@ -1,15 +1,16 @@
 #!/usr/bin/env python3
-"""Angle of repose of the dumped heaps: a straight-line fit to each flank of the heap's surface.
+"""Angle of repose of the heaps poured through the slot: a straight-line fit to each flank.
 
 Reads OUT_DIR/mu<mu>_mur<mur>/solids.csv (t, id, x, z, ...) written by sweep.sh. The surface is
-the highest grain centre in bins of width d50 (10 mm) along x; the grains' radii are not in
-solids.csv, and a constant offset (centre + d50/2) would not change a slope. A flank's points:
-bins outside the container's footprint (|x - xc| > W/2 + wall + d50: under the mouth the surface
-is the column still falling or resting in the container), from the footprint outwards up to the
-first empty bin (grains bounced beyond the deposit are left out), and with the surface at least
-1.5 d50 above the teeth's tips (the toe, one or two grains thick, is left out). Each flank is
-fitted by least squares; the angle is atan(|slope|), and the heap's angle the mean of both flanks.
-Rest: the same angles 0.2 s before the end, and the fastest grain at the end.
+the highest grain centre in bins of width d50 (10 mm) along x, counting only grains below the
+mouth (those left in the container are counted apart) and slower than 0.3 m/s (not in flight);
+the grains' radii are not in solids.csv, and a constant offset (centre + d50/2) changes no slope.
+The heap's height H is the highest bin's top (centre + d50/2) above the teeth's tips. A flank's
+points: the bins from the summit outwards up to the first empty bin (grains bounced beyond the
+deposit are left out) whose top lies between 0.2 H and 0.8 H (the rounded summit under the slot
+and the toe, one or two grains thick, are left out). Each flank is fitted by least squares; the
+angle is atan(|slope|), and the heap's angle the mean of both flanks. Rest: the angle and height
+0.2 s before the end, the fastest grain and the grains still moving.
 Writes OUT_DIR/angle_of_repose.csv and, with matplotlib, OUT_DIR/angle_of_repose.png.
 usage: analyse.py OUT_DIR
 """
@@ -18,7 +19,10 @@ import math
 import os
 import sys
 
-XC, HALF_FOOT, D50, FLOOR, BIN = 0.8, 0.15 + 0.01 + 0.01, 0.01, 0.004, 0.01
+XC, MOUTH_Z, D50, FLOOR, BIN = 0.8, 0.17, 0.01, 0.004, 0.01
+BAND = (0.2, 0.8)
+FLIGHT = 0.3  # m/s: grains faster than this are in flight, not part of the surface
+MOVING = 0.05  # m/s: a grain below the mouth faster than this is counted as moving
 MPS_MU, MPS_DEG, MPS_DEM_DEG = 0.1, 22.3, 22.5
 
 
@@ -32,21 +36,25 @@ def frames(path):
 
 
 def surface(grains):
+    """Top of the deposit per bin (centre + d50/2 - the teeth's tips): grains below the mouth and
+    slower than FLIGHT (grains still falling from the slot are not the heap's surface)."""
     top = {}
-    for x, z, _ in grains:
-        k = math.floor(x / BIN)
-        top[k] = max(top.get(k, -1.0), z)
+    for x, z, v in grains:
+        if z < MOUTH_Z and v < FLIGHT:
+            k = math.floor(x / BIN)
+            top[k] = max(top.get(k, -1.0), z + D50 / 2 - FLOOR)
     return top
 
 
 def flank(top, side):
-    """(x, z) of the surface bins of one flank, from the footprint outwards (side = -1 or +1)."""
+    """(x, top) of the surface bins of one flank, from the summit outwards (side = -1 or +1)."""
+    k_top = max(top, key=lambda k: (top[k], -abs((k + 0.5) * BIN - XC)))
+    h = top[k_top]
     pts = []
-    k = math.floor((XC + side * HALF_FOOT) / BIN)
+    k = k_top
     while k in top:
-        x = (k + 0.5) * BIN
-        if side * (x - XC) > HALF_FOOT and top[k] + D50 / 2 - FLOOR >= 1.5 * D50:
-            pts.append((x, top[k]))
+        if BAND[0] * h <= top[k] <= BAND[1] * h:
+            pts.append(((k + 0.5) * BIN, top[k]))
         k += side
     return pts
 
@@ -62,12 +70,32 @@ def slope_deg(pts):
 
 
 def angles(grains):
+    """Left and right flank angles [deg], their mean, points per flank, height, extent."""
     top = surface(grains)
+    if not top:
+        nan = float("nan")
+        return dict(left=nan, right=nan, angle=nan, n_left=0, n_right=0, height=0.0, x_min=nan,
+                    x_max=nan)
     left, right = flank(top, -1), flank(top, +1)
     a_l, a_r = slope_deg(left), slope_deg(right)
-    height = max(top.values()) + D50 / 2 - FLOOR if top else 0.0
-    xs = [x for x, _, _ in grains]
-    return a_l, a_r, (a_l + a_r) / 2, len(left), len(right), height, min(xs), max(xs)
+    xs = [x for x, z, _ in grains if z < MOUTH_Z]
+    return dict(left=a_l, right=a_r, angle=(a_l + a_r) / 2, n_left=len(left), n_right=len(right),
+                height=max(top.values()), x_min=min(xs), x_max=max(xs))
+
+
+def at_end(path):
+    """The measures of one run: the last frame's and 0.2 s before; the fastest grain, the grains
+    below the mouth moving faster than MOVING, the grains left in the container."""
+    fr = frames(path)
+    ts = sorted(fr)
+    t_end = ts[-1]
+    t_prev = min(ts, key=lambda t: abs(t - (t_end - 0.2)))
+    r, prev = angles(fr[t_end]), angles(fr[t_prev])
+    r.update(t_end=t_end, angle_prev=prev["angle"], height_prev=prev["height"],
+             vmax=max(v for _, _, v in fr[t_end]),
+             moving=sum(1 for _, z, v in fr[t_end] if z < MOUTH_Z and v > MOVING),
+             in_container=sum(1 for _, z, _ in fr[t_end] if z > MOUTH_Z))
+    return r
 
 
 def runs(out):
@@ -82,25 +110,19 @@ def main():
     out = sys.argv[1]
     rows = []
     for mu, mur, name, path in runs(out):
-        fr = frames(path)
-        ts = sorted(fr)
-        t_end = ts[-1]
-        t_prev = min(ts, key=lambda t: abs(t - (t_end - 0.2)))
-        a_l, a_r, a, n_l, n_r, h, x0, x1 = angles(fr[t_end])
-        rows.append(dict(mu=mu, mur=mur, t_end=t_end, left=a_l, right=a_r, angle=a, n_left=n_l,
-                         n_right=n_r, height=h, x_min=x0, x_max=x1,
-                         angle_prev=angles(fr[t_prev])[2],
-                         vmax=max(v for _, _, v in fr[t_end]),
-                         in_container=sum(1 for _, z, _ in fr[t_end] if z > 0.17)))
+        r = at_end(path)
+        r.update(mu=mu, mur=mur)
+        rows.append(r)
     print("mu    mu_r  t_end  left   right  angle [deg] (0.2 s before)  points L/R  height [m]"
-          "  x range [m]      v_max [m/s]  left in container")
+          "  x range [m]      v_max [m/s]  moving  left in container")
     for r in rows:
         print(f"{r['mu']:<5g} {r['mur']:<5g} {r['t_end']:.2f}  {r['left']:5.1f}  {r['right']:5.1f}"
-              f"  {r['angle']:5.1f}       ({r['angle_prev']:5.1f})         {r['n_left']:3d}/{r['n_right']:<3d}"
+              f"  {r['angle']:5.1f}       ({r['angle_prev']:5.1f})         "
+              f"{r['n_left']:3d}/{r['n_right']:<3d}"
               f"    {r['height']:.3f}      {r['x_min']:.3f}-{r['x_max']:.3f}  {r['vmax']:.3f}"
-              f"        {r['in_container']}")
+              f"        {r['moving']:3d}     {r['in_container']}")
     keys = ["mu", "mur", "t_end", "left", "right", "angle", "angle_prev", "n_left", "n_right",
-            "height", "x_min", "x_max", "vmax", "in_container"]
+            "height", "height_prev", "x_min", "x_max", "vmax", "moving", "in_container"]
     with open(os.path.join(out, "angle_of_repose.csv"), "w") as f:
         f.write(",".join(keys) + "\n")
         for r in rows:
@@ -133,11 +155,11 @@ def plot(rows, out):
         fr = frames(path)
         top = surface(fr[max(fr)])
         ks = sorted(top)
-        ax[1].plot([(k + 0.5) * BIN for k in ks], [top[k] + D50 / 2 for k in ks],
+        ax[1].plot([(k + 0.5) * BIN for k in ks], [top[k] for k in ks],
                    "-" if mur == 0 else "--", lw=1, label=f"mu {mu:g}, mu_r {mur:g}")
-    ax[1].axhline(0.17, color="grey", lw=0.5)
+    ax[1].axhline(MOUTH_Z - FLOOR, color="grey", lw=0.5, label="mouth")
     ax[1].set_xlabel("x [m]")
-    ax[1].set_ylabel("surface height [m] (top grain, centre + d50/2)")
+    ax[1].set_ylabel("surface above the teeth [m] (top grain + d50/2)")
     ax[1].legend(fontsize=6, ncol=2)
     fig.tight_layout()
     fig.savefig(os.path.join(out, "angle_of_repose.png"), dpi=110)
