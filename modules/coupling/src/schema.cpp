@@ -82,6 +82,11 @@ void declare_parameters(core::ParamSchema& s) {
   s.boolean("coupling/hydrostatic_quadrature", true,
             "carry the cell pressure to each wetted piece along rho g in the solid loads "
             "(false: the cell-centre value, as the paper)");
+  s.boolean("coupling/viscous_rigid_rows", false,
+            "fluid/viscosity_scheme implicit: the solids' rigid velocities are unknowns of the "
+            "viscous step (stable for light solids; 2 more solves per component and solid); "
+            "false: the split, the fluid's wall value the solid's start-of-step velocity, unstable "
+            "for solids much lighter than the fluid (doc/viscous.md)");
   s.real("coupling/tiny_cell_fraction", 1e-3,
          "cut cells with a smaller fluid fraction are made solid (doc/geometry.md)")
       .at_least(0.0)

@@ -252,8 +252,9 @@ void Simulation::step() {
     if (correct_density(L, set, m.step, solids, m.fluid, m.density_solver.get(), m.particles))
       mark_cells(L, set, solids.cut, m.particles, m.occupancy, m.fluid);  // density: cells again
     particles_to_grid(L, set, solids, m.particles, m.fluid);              // transfer
-    m.viscous = add_forces(L, set.fluid, m.dem.get(), m.obstacles, dt, m.fluid);  // forces
-    auto collision = predict_contacts(m.dem.get(), dt);                           // contact
+    m.viscous = add_forces(L, set.fluid, set.viscous_rigid_rows, m.dem.get(), m.obstacles, dt,
+                           m.fluid);                     // forces
+    auto collision = predict_contacts(m.dem.get(), dt);  // contact
     // eq. 6: the viscous loads join the p-independent loads of V* (doc/viscous.md)
     if (m.dem && !m.viscous.solids.empty()) collision = plus_viscous(collision, m.viscous, *m.dem);
     solve = solve_pressure(L, set, solids, collision, dt, *m.pressure, m.fluid);  // pressure

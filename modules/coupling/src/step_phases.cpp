@@ -32,6 +32,7 @@ StepSettings step_settings_from(const core::Params& params) {
   s.t_end = params.real("time/end");
   s.has_fluid = !params.sublist_names("water").empty();
   s.beta = params.real("coupling/beta");
+  s.viscous_rigid_rows = params.boolean("coupling/viscous_rigid_rows");
   s.tiny_fraction = params.real("coupling/tiny_cell_fraction");
   s.level_probes = params.reals("output/level_probes");
   s.solid_count_box = params.reals("output/solid_count_box");
@@ -144,19 +145,24 @@ void particles_to_grid(const Layout& L, const StepSettings& set, const SolidsAtS
 }
 
 // Viscosity explicit, or implicit at the true boundaries of every solid (at X^n) and obstacle.
-ViscousExchange add_forces(const Layout& L, const fluid::FluidConfig& cfg,
+ViscousExchange add_forces(const Layout& L, const fluid::FluidConfig& cfg, bool rigid_rows,
                            const dem::DemSolver* dem,
                            const std::vector<geometry::Obstacle>& obstacles, double dt,
                            fluid::FluidState& f) {
   core::ScopedTimer timer("forces");
-  fluid::apply_gravity(f.u, f.w, f.cells, dt, cfg);
   ViscousExchange viscous;
   if (cfg.implicit_viscosity) {
+    // Viscosity on u^n, then gravity: the implicit solve would diffuse g dt against the walls and
+    // bodies into a rotational field the projection cannot remove (doc/viscous.md).
     const SolidScene all = scene_of_all(dem, obstacles);
     const auto step = fluid::apply_viscosity_implicit(f.u, f.w, f.cells, dt, cfg, L.d, L.halo,
-                                                      viscous_bodies(all));
+                                                      viscous_bodies(all, rigid_rows));
     viscous = viscous_exchange(all, step.loads, dem, L.comm);
+    fluid::apply_gravity(f.u, f.w, f.cells, dt, cfg);  // on owned faces: the halo follows
+    L.halo.forward(f.u);
+    L.halo.forward(f.w);
   } else {
+    fluid::apply_gravity(f.u, f.w, f.cells, dt, cfg);
     fluid::apply_viscosity(f.u, f.w, f.cells, dt, cfg, L.d, L.halo);
   }
   fluid::enforce_walls(f.u, f.w, cfg, L.d);

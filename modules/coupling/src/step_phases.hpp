@@ -32,12 +32,13 @@ struct StepSettings {
   particles::ParticleConfig particles;
   double cfl = 0.5, dt_max = 0.0, dt_min = 0.0, t_end = 0.0;  ///< time/*
   bool has_fluid = false;
-  bool has_solids = false;   ///< the run has a DEM (solids; or no water)
-  bool has_bodies = false;   ///< solids or obstacles anywhere in the run (every rank alike)
-  bool ghost_fluid = true;   ///< sub-cell free surface (else p = 0 at air cell centres)
-  double theta_min = 0.01;   ///< free_surface/theta_min
-  double tiny_fraction = 0;  ///< coupling/tiny_cell_fraction
-  double beta = 1.0;         ///< coupling/beta, eq. 20
+  bool has_solids = false;          ///< the run has a DEM (solids; or no water)
+  bool has_bodies = false;          ///< solids or obstacles anywhere in the run (every rank alike)
+  bool ghost_fluid = true;          ///< sub-cell free surface (else p = 0 at air cell centres)
+  double theta_min = 0.01;          ///< free_surface/theta_min
+  double tiny_fraction = 0;         ///< coupling/tiny_cell_fraction
+  double beta = 1.0;                ///< coupling/beta, eq. 20
+  bool viscous_rigid_rows = false;  ///< coupling/viscous_rigid_rows (doc/viscous.md)
   QuadratureOptions quadrature;
   double density_relaxation = 0.0;                    ///< free_surface/density_correction
   long long density_interval = 1;                     ///< free_surface/density_correction_interval
@@ -92,9 +93,9 @@ void particles_to_grid(const Layout& L, const StepSettings& set, const SolidsAtS
                        const particles::ParticleSet& particles, fluid::FluidState& fluid);
 
 /// forces: gravity and viscosity -> u~. Explicit, or implicit at the true boundaries of every
-/// solid of `dem` (collective) and obstacle; returns the implicit scheme's viscous loads (empty
-/// for the explicit one).
-ViscousExchange add_forces(const Layout& L, const fluid::FluidConfig& cfg,
+/// solid of `dem` (collective) and obstacle, the solids' rigid velocities unknowns of it with
+/// `rigid_rows`; returns the implicit scheme's viscous loads (empty for the explicit one).
+ViscousExchange add_forces(const Layout& L, const fluid::FluidConfig& cfg, bool rigid_rows,
                            const dem::DemSolver* dem,
                            const std::vector<geometry::Obstacle>& obstacles, double dt,
                            fluid::FluidState& fluid);

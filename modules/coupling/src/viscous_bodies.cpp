@@ -20,7 +20,7 @@ bool inside_polygons(const std::vector<std::vector<Vec2>>& polygons, const Vec2&
 
 }  // namespace
 
-std::vector<fluid::ViscousBody> viscous_bodies(const SolidScene& scene) {
+std::vector<fluid::ViscousBody> viscous_bodies(const SolidScene& scene, bool rigid_rows) {
   std::vector<fluid::ViscousBody> bodies;
   for (std::size_t b = 0; b < scene.placements.size(); ++b) {
     const geometry::SolidPlacement& pl = scene.placements[b];
@@ -28,7 +28,8 @@ std::vector<fluid::ViscousBody> viscous_bodies(const SolidScene& scene) {
     const geometry::ShapePtr shape = pl.shape;
     const geometry::Pose pose = pl.pose;
     bodies.push_back({[shape, pose](const Vec2& x) { return shape->contains(pose.to_body(x)); },
-                      st.v, st.omega, pose.x, shape->mass_properties().area});
+                      st.v, st.omega, pose.x, shape->mass_properties().area,
+                      rigid_rows ? st.mass : 0.0, rigid_rows ? st.inertia : 0.0});
   }
   for (const geometry::Obstacle& o : scene.obstacles) {
     const auto polygons = o.polygons;

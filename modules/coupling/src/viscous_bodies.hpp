@@ -14,8 +14,9 @@
 namespace picdem::coupling {
 
 /// The scene's solids (shape contains at the pose, velocity and angular velocity of their
-/// state, centre of mass, area), then its obstacles (even-odd point in polygon, at rest).
-std::vector<fluid::ViscousBody> viscous_bodies(const SolidScene& scene);
+/// state, centre of mass, area; with `rigid_rows` their mass and inertia, which makes them free
+/// bodies of the implicit step), then its obstacles (even-odd point in polygon, at rest).
+std::vector<fluid::ViscousBody> viscous_bodies(const SolidScene& scene, bool rigid_rows = false);
 
 /// Collective: every solid of the run (gathered from their owners, ordered by id) and the
 /// obstacles: the scene of the replicated implicit viscous solve, in which every rank solves

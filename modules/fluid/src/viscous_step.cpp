@@ -2,6 +2,7 @@
 // viscous_operator.cpp, the solve of viscous_solver.cpp, scatter.
 #include <algorithm>
 
+#include "picdem/core/error.hpp"
 #include "picdem/core/timer.hpp"
 #include "picdem/fluid/viscous.hpp"
 
@@ -75,15 +76,26 @@ ViscousStepResult apply_viscosity_implicit(grid::FaceField& u, grid::FaceField& 
   const ViscousStencil su = build_viscous_stencil(0, vg, bodies, walls, &mask_u);
   const ViscousStencil sw = build_viscous_stencil(1, vg, bodies, walls, &mask_w);
   std::vector<double> ug = gather(u, d), wg = gather(w, d);
-  const std::vector<double> u_old = ug, w_old = wg;
-  result.iterations +=
-      solve_viscous_implicit(su, cfg.nu, dt, std::vector<double>(ug.size(), 0.0), ug, 1e-12, beta);
-  result.iterations +=
-      solve_viscous_implicit(sw, cfg.nu, dt, std::vector<double>(wg.size(), 0.0), wg, 1e-12, beta);
-  std::vector<double> ub(ug.size()), wb(wg.size());
-  for (std::size_t n = 0; n < ug.size(); ++n) ub[n] = beta * ug[n] + (1.0 - beta) * u_old[n];
-  for (std::size_t n = 0; n < wg.size(); ++n) wb[n] = beta * wg[n] + (1.0 - beta) * w_old[n];
-  result.loads = viscous_loads(su, sw, ub, wb, cfg.rho * cfg.nu, bodies);
+  const bool rigid_rows =
+      std::any_of(bodies.begin(), bodies.end(), [](const ViscousBody& b) { return b.mass > 0.0; });
+  std::vector<ViscousBody> solved = bodies;
+  if (rigid_rows) {
+    if (beta != 1.0) throw core::InputError("viscous rigid rows need backward Euler (beta = 1)");
+    result.loads =
+        solve_viscous_rigid_rows(su, sw, cfg.nu, cfg.rho, dt, ug, wg, solved, result.iterations);
+  } else {
+    const std::vector<double> u_old = ug, w_old = wg;
+    result.iterations += solve_viscous_implicit(su, cfg.nu, dt, std::vector<double>(ug.size(), 0.0),
+                                                ug, 1e-12, beta);
+    result.iterations += solve_viscous_implicit(sw, cfg.nu, dt, std::vector<double>(wg.size(), 0.0),
+                                                wg, 1e-12, beta);
+    std::vector<double> ub(ug.size()), wb(wg.size());
+    for (std::size_t n = 0; n < ug.size(); ++n) ub[n] = beta * ug[n] + (1.0 - beta) * u_old[n];
+    for (std::size_t n = 0; n < wg.size(); ++n) wb[n] = beta * wg[n] + (1.0 - beta) * w_old[n];
+    result.loads = viscous_loads(su, sw, ub, wb, cfg.rho * cfg.nu, bodies);
+  }
+  for (const ViscousBody& b : solved) result.velocity.push_back(b.velocity);
+  for (const ViscousBody& b : solved) result.omega.push_back(b.omega);
   scatter(ug, u, d);
   scatter(wg, w, d);
   halo.forward(u);

@@ -106,3 +106,16 @@ TEST(MomentumBalance, ViscousSinkingDiskInClosedTank) {
   EXPECT_GT(core::norm(b.viscous_impulse_on_disk), 0.1 * fluid_on_disk);
   EXPECT_LT(core::norm(b.change - b.impulse), 0.02 * fluid_on_disk);
 }
+
+// The same with the disk's rigid velocity an unknown of the viscous step
+// (coupling/viscous_rigid_rows): the exchange stays exact, so the budget closes as well.
+TEST(MomentumBalance, ViscousSinkingDiskRigidRows) {
+  core::Comm comm;
+  const Balance b = sinking_disk(comm, "MomentumBalance.ViscousSinkingDiskRigidRows",
+                                 {"fluid/viscosity=1e-2", "fluid/viscosity_scheme=implicit",
+                                  "fluid/walls=no_slip", "coupling/viscous_rigid_rows=true"});
+  const double fluid_on_disk = core::norm(b.disk_change - b.gravity_on_disk);
+  EXPECT_GT(b.disk_z - 0.01, 0.01);
+  EXPECT_GT(core::norm(b.viscous_impulse_on_disk), 0.1 * fluid_on_disk);
+  EXPECT_LT(core::norm(b.change - b.impulse), 0.02 * fluid_on_disk);
+}

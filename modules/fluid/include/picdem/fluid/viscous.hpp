@@ -19,13 +19,16 @@ namespace picdem::fluid {
 /// A rigid body as the viscous operator sees it: a point-inside test (true inside or on the
 /// boundary) and the rigid velocity V + omega x (x - centre) that is the no-slip boundary value.
 /// Fixed obstacles: velocity 0, omega 0. `area` (the body's area) is needed for the torque of a
-/// rotating body (viscous_loads).
+/// rotating body (viscous_loads). mass > 0 (per unit depth, with `inertia` about the centre): a
+/// free body whose rigid velocity is an unknown of the implicit step (rigid rows, doc/viscous.md);
+/// 0: its velocity is prescribed.
 struct ViscousBody {
   std::function<bool(const core::Vec2&)> inside;
   core::Vec2 velocity;
   double omega = 0.0;
   core::Vec2 centre;
   double area = 0.0;
+  double mass = 0.0, inertia = 0.0;
   core::Vec2 velocity_at(const core::Vec2& x) const {
     return {velocity.x - omega * (x.z - centre.z), velocity.z + omega * (x.x - centre.x)};
   }
@@ -117,13 +120,15 @@ ViscousLoads viscous_loads(const ViscousStencil& su, const ViscousStencil& sw,
 /// Implicit viscosity on the step's fields, in place of apply_viscosity: gathers u, w and the
 /// cell states of all ranks, builds the stencils (unknowns: nodes next to a Fluid cell and outside
 /// every body; walls no-slip or free-slip from cfg), solves both components with
-/// solve_viscous_implicit (f = 0: gravity is applied before), writes the owned values back,
+/// solve_viscous_implicit (f = 0: the step applies gravity after it), writes the owned values back,
 /// forwards the halo and enforces the walls. Returns the CG iterations (both components) and the
 /// viscous loads of the step (from beta u_new + (1 - beta) u_old). Every rank solves the whole
 /// grid (replicated): meant for one rank or small grids until the rows are distributed.
 struct ViscousStepResult {
   int iterations = 0;
   ViscousLoads loads;
+  std::vector<core::Vec2> velocity;  ///< per body: its rigid velocity in the step (solved if free)
+  std::vector<double> omega;
 };
 ViscousStepResult apply_viscosity_implicit(grid::FaceField& u, grid::FaceField& w,
                                            const CellStates& cells, double dt,
@@ -131,6 +136,17 @@ ViscousStepResult apply_viscosity_implicit(grid::FaceField& u, grid::FaceField& 
                                            const grid::Halo& halo,
                                            const std::vector<ViscousBody>& bodies,
                                            double beta = 1.0);
+
+/// Backward Euler for u and w (u, w: u_old on entry, u_new on return, per node) with the rigid
+/// velocities of the free bodies (mass > 0) as unknowns: M_b (s_b - s_b^n) / dt = F_b, F_b the
+/// viscous load of body b from the same legs (viscous_loads). Solved by superposition: the fluid
+/// solve with the bodies at s^n plus, per free body, its answers to unit rigid velocities (2 more
+/// solves per component and body), then a dense 3 x 3 per body system. The bodies' velocities are
+/// set to s on return; returns the loads at (u_new, s) and adds the CG iterations.
+ViscousLoads solve_viscous_rigid_rows(const ViscousStencil& su, const ViscousStencil& sw, double nu,
+                                      double rho, double dt, std::vector<double>& u,
+                                      std::vector<double>& w, std::vector<ViscousBody>& bodies,
+                                      int& iterations);
 
 /// Stability limit of explicit viscosity on a uniform grid: dt <= h^2 / (4 nu) (infinity for
 /// nu = 0).
