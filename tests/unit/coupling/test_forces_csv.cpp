@@ -119,3 +119,27 @@ TEST(ForcesCsv, ImmersedBlockBuoyancyAndTorqueAtAnInterval) {
   EXPECT_NEAR(last[csv.column("pressure_x")], 0.0, 1e-5 * buoyancy);
   EXPECT_NEAR(last[csv.column("torque_pressure")], buoyancy * cx, 1e-5 * buoyancy * cx);
 }
+
+// The implicit viscosity (nu = 1e-2, no-slip walls, rigid rows) around the neutral disk in still
+// water: the viscous columns are written and hold no load at rest (before gravity was moved after
+// the viscous solve, the diffused g dt gave the disk and the walls spurious viscous loads), and the
+// pressure force is still rho g A.
+TEST(ForcesCsv, NeutralDiskImplicitViscosityNoViscousLoadAtRest) {
+  core::Comm comm;
+  const Csv csv = run_and_read(comm, "neutral_disk_viscous", "cases/neutral_disk/case.yaml",
+                               {"fluid/viscosity=1e-2", "fluid/viscosity_scheme=implicit",
+                                "fluid/walls=no_slip", "coupling/viscous_rigid_rows=true"},
+                               3);
+  ASSERT_EQ(csv.rows.size(), 3u);
+  const double buoyancy = 1000.0 * 9.81 * M_PI * 1e-4;
+  const auto& last = csv.rows.back();
+  if (comm.is_root())
+    std::printf(
+        "neutral disk, implicit viscosity, forces.csv at t = %.4f s: pressure (%.6f, "
+        "%.6f) N/m, viscous (%.3e, %.3e) N/m, viscous torque %.3e N m/m\n",
+        last[0], last[3], last[4], last[5], last[6], last[8]);
+  EXPECT_NEAR(last[csv.column("pressure_z")], buoyancy, 1e-5 * buoyancy);
+  EXPECT_NEAR(last[csv.column("viscous_x")], 0.0, 1e-6 * buoyancy);
+  EXPECT_NEAR(last[csv.column("viscous_z")], 0.0, 1e-6 * buoyancy);
+  EXPECT_NEAR(last[csv.column("torque_viscous")], 0.0, 1e-9);
+}
