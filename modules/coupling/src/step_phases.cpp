@@ -268,7 +268,7 @@ bool correct_density(const Layout& L, const StepSettings& set, long long step,
                                        set.density_relaxation, cap, d, source);
   if (!L.comm.any(mine)) return false;
   fluid::FluidConfig unit = set.fluid;
-  unit.rho = 1.0, unit.no_slip = false;
+  unit.rho = 1.0, unit.no_slip = false, unit.wall_no_slip = {};  // displacements free-slip
   const fluid::SurfaceFractions* surface = set.ghost_fluid ? &f.surface : nullptr;
   FaceField dx(d, Stagger::FaceX, 0.0), dz(d, Stagger::FaceZ, 0.0);
   grid::CellField q(d, Stagger::Cell, 0.0);

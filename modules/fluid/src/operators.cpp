@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -38,6 +39,11 @@ void declare_parameters(core::ParamSchema& schema) {
   schema.reals("fluid/gravity", {0.0, -9.81}, "gravity (g_x, g_z) [m/s^2]").size(2, 2);
   schema.string("fluid/walls", "free_slip", {"free_slip", "no_slip"},
                 "tank-wall condition on the tangential velocity");
+  for (const char* side : {"left", "right", "bottom", "top"})
+    schema.string(std::string("fluid/wall_") + side, "default", {"default", "free_slip", "no_slip"},
+                  std::string("condition of the ") + side +
+                      " tank wall on the tangential velocity; default: as fluid/walls "
+                      "(doc/viscous.md)");
   schema.string("fluid/viscosity_scheme", "explicit", {"explicit", "implicit"},
                 "explicit: 5-point viscosity on faces between fluid cells, the time step held "
                 "below h^2 / (4 nu); implicit: backward Euler with no-slip at the true boundary of "
@@ -106,6 +112,11 @@ FluidConfig config_from(const core::Params& params) {
   const auto g = params.reals("fluid/gravity");
   c.g = {g[0], g[1]};
   c.no_slip = params.string("fluid/walls") == "no_slip";
+  const char* sides[4] = {"left", "right", "bottom", "top"};
+  for (std::size_t s = 0; s < 4; ++s) {
+    const std::string v = params.string(std::string("fluid/wall_") + sides[s]);
+    if (v != "default") c.wall_no_slip[s] = v == "no_slip";
+  }
   c.implicit_viscosity = params.string("fluid/viscosity_scheme") == "implicit";
   c.h = params.real("grid/cell_size");
   return c;
@@ -127,8 +138,10 @@ Apertures open_apertures(const grid::Decomposition& d) {
 void enforce_walls(FaceField& u, FaceField& w, const FluidConfig& cfg,
                    const grid::Decomposition& d) {
   const int nx = d.spec().nx, nz = d.spec().nz;
-  // Tangential ghost = t * mirrored inside value: free-slip t = +1, no-slip t = -1.
-  const double t = cfg.no_slip ? -1.0 : 1.0;
+  // Tangential ghost = t * mirrored inside value: free-slip t = +1, no-slip t = -1 (per wall).
+  auto t_of = [&](TankWall wall) { return no_slip_at(cfg, wall) ? -1.0 : 1.0; };
+  const double t_left = t_of(TankWall::Left), t_right = t_of(TankWall::Right);
+  const double t_bottom = t_of(TankWall::Bottom), t_top = t_of(TankWall::Top);
   const auto& bu = u.storage();
   for (int k = bu.k0; k < bu.k1; ++k) {
     for (int i : {0, nx})
@@ -142,9 +155,9 @@ void enforce_walls(FaceField& u, FaceField& w, const FluidConfig& cfg,
   // Tangential component about the z-walls (walls halfway between u(k = -1) and u(k = 0)).
   for (int i = bu.i0; i < bu.i1; ++i) {
     for (int k = bu.k0; k < 0; ++k)
-      if (u.in_storage(i, -k - 1)) u(i, k) = t * u(i, -k - 1);
+      if (u.in_storage(i, -k - 1)) u(i, k) = t_bottom * u(i, -k - 1);
     for (int k = nz; k < bu.k1; ++k)
-      if (u.in_storage(i, 2 * nz - 1 - k)) u(i, k) = t * u(i, 2 * nz - 1 - k);
+      if (u.in_storage(i, 2 * nz - 1 - k)) u(i, k) = t_top * u(i, 2 * nz - 1 - k);
   }
   const auto& bw = w.storage();
   for (int i = bw.i0; i < bw.i1; ++i) {
@@ -157,9 +170,9 @@ void enforce_walls(FaceField& u, FaceField& w, const FluidConfig& cfg,
   }
   for (int k = bw.k0; k < bw.k1; ++k) {
     for (int i = bw.i0; i < 0; ++i)
-      if (w.in_storage(-i - 1, k)) w(i, k) = t * w(-i - 1, k);
+      if (w.in_storage(-i - 1, k)) w(i, k) = t_left * w(-i - 1, k);
     for (int i = nx; i < bw.i1; ++i)
-      if (w.in_storage(2 * nx - 1 - i, k)) w(i, k) = t * w(2 * nx - 1 - i, k);
+      if (w.in_storage(2 * nx - 1 - i, k)) w(i, k) = t_right * w(2 * nx - 1 - i, k);
   }
 }
 

@@ -74,11 +74,17 @@ bool any_inside(const Vec2& x, const std::vector<ViscousBody>& bodies) {
   return false;
 }
 
+/// The tank wall a leg in direction d (kDi, kDk) meets.
+TankWall wall_towards(int d) {
+  if (kDi[d] != 0) return kDi[d] < 0 ? TankWall::Left : TankWall::Right;
+  return kDk[d] < 0 ? TankWall::Bottom : TankWall::Top;
+}
+
 /// Adds the boundary leg of unknown r towards target t (at the fraction `reach` of h from the
 /// node: 1 for a neighbour node, 1/2 for a wall between nodes), or the wall's leg when no body is
-/// met first; `on_wall` says that t is on the tank wall.
+/// met first; `on_wall` says that t is on the tank wall, the one in direction d.
 void add_boundary_leg(ViscousStencil& s, int r, const Vec2& p, const Vec2& t, double reach,
-                      bool on_wall, const std::vector<ViscousBody>& bodies,
+                      bool on_wall, int d, const std::vector<ViscousBody>& bodies,
                       const ViscousWalls& walls) {
   const Crossing c = first_crossing(p, t, bodies);
   ViscousLeg leg;
@@ -92,11 +98,11 @@ void add_boundary_leg(ViscousStencil& s, int r, const Vec2& p, const Vec2& t, do
   } else {
     if (!on_wall) return;  // a neighbour that is not an unknown and not in a body: none here
     const bool tangential = reach < 1.0;
-    if (tangential && walls.kind == WallKind::FreeSlip) return;  // zero gradient: no leg
+    const WallKind kind = walls.kind_at(wall_towards(d));
+    if (tangential && kind == WallKind::FreeSlip) return;  // zero gradient: no leg
     leg.body = -1;
     leg.point = t;
-    leg.value =
-        walls.kind == WallKind::Prescribed ? component_of(walls.velocity(t), s.component) : 0.0;
+    leg.value = kind == WallKind::Prescribed ? component_of(walls.velocity(t), s.component) : 0.0;
     leg.weight = 1.0 / reach;
   }
   s.diag[static_cast<std::size_t>(r)] += leg.weight;
@@ -118,8 +124,9 @@ ViscousStencil build_viscous_stencil(int component, const ViscousGrid& g,
                                      const std::vector<unsigned char>* fluid_nodes) {
   if (!(g.h > 0.0) || g.nx < 1 || g.nz < 1)
     throw core::InputError("viscous stencil: the grid needs h > 0 and at least one cell");
-  if (walls.kind == WallKind::Prescribed && !walls.velocity)
-    throw core::InputError("viscous stencil: prescribed walls need a velocity function");
+  for (TankWall wall : {TankWall::Left, TankWall::Right, TankWall::Bottom, TankWall::Top})
+    if (walls.kind_at(wall) == WallKind::Prescribed && !walls.velocity)
+      throw core::InputError("viscous stencil: prescribed walls need a velocity function");
   const std::size_t nodes = component == 0 ? std::size_t(g.nx + 1) * std::size_t(g.nz)
                                            : std::size_t(g.nx) * std::size_t(g.nz + 1);
   if (fluid_nodes && fluid_nodes->size() != nodes)
@@ -152,7 +159,7 @@ ViscousStencil build_viscous_stencil(int component, const ViscousGrid& g,
       if (in < 0 || kn < 0 || in >= s.ni || kn >= s.nk) {
         // Past the last node: the tangential component's wall, half a cell away.
         const Vec2 t = p + Vec2{0.5 * g.h * kDi[d], 0.5 * g.h * kDk[d]};
-        add_boundary_leg(s, ri, p, t, 0.5, true, bodies, walls);
+        add_boundary_leg(s, ri, p, t, 0.5, true, d, bodies, walls);
         continue;
       }
       const int m = in + s.ni * kn;
@@ -163,7 +170,7 @@ ViscousStencil build_viscous_stencil(int component, const ViscousGrid& g,
         continue;
       }
       const bool wall_node = component == 0 ? (in == 0 || in == g.nx) : (kn == 0 || kn == g.nz);
-      add_boundary_leg(s, ri, p, s.position(m, g), 1.0, wall_node, bodies, walls);
+      add_boundary_leg(s, ri, p, s.position(m, g), 1.0, wall_node, d, bodies, walls);
     }
   }
   return s;

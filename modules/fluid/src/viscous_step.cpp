@@ -54,6 +54,14 @@ std::vector<unsigned char> fluid_node_mask(int component, const std::vector<doub
 
 }  // namespace
 
+ViscousWalls viscous_walls_of(const FluidConfig& cfg) {
+  auto kind = [](bool no_slip) { return no_slip ? WallKind::NoSlip : WallKind::FreeSlip; };
+  ViscousWalls walls{kind(cfg.no_slip), {}, {}};
+  for (std::size_t s = 0; s < 4; ++s)
+    if (cfg.wall_no_slip[s]) walls.side[s] = kind(*cfg.wall_no_slip[s]);
+  return walls;
+}
+
 ViscousStepResult apply_viscosity_implicit(grid::FaceField& u, grid::FaceField& w,
                                            const CellStates& cells, double dt,
                                            const FluidConfig& cfg, const grid::Decomposition& d,
@@ -70,7 +78,7 @@ ViscousStepResult apply_viscosity_implicit(grid::FaceField& u, grid::FaceField& 
       states[static_cast<std::size_t>(i + g.nx * k)] = static_cast<double>(cells(i, k));
   d.comm().sum_in_place(states);
   const ViscousGrid vg{g.origin, g.h, g.nx, g.nz};
-  const ViscousWalls walls{cfg.no_slip ? WallKind::NoSlip : WallKind::FreeSlip, {}};
+  const ViscousWalls walls = viscous_walls_of(cfg);
   const std::vector<unsigned char> mask_u = fluid_node_mask(0, states, g);
   const std::vector<unsigned char> mask_w = fluid_node_mask(1, states, g);
   const ViscousStencil su = build_viscous_stencil(0, vg, bodies, walls, &mask_u);

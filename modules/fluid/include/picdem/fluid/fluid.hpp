@@ -9,7 +9,9 @@
 // All functions work on the owned samples of this rank; halo values are read where stencils
 // need them, so the caller forwards the halo of inputs first unless a function says otherwise.
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "picdem/core/comm.hpp"
@@ -20,20 +22,32 @@
 
 namespace picdem::fluid {
 
-/// Declares fluid/density, fluid/viscosity, fluid/gravity, fluid/walls, fluid/viscosity_scheme
-/// and the solver/ keys.
+/// Declares fluid/density, fluid/viscosity, fluid/gravity, fluid/walls, fluid/wall_left,
+/// fluid/wall_right, fluid/wall_bottom, fluid/wall_top, fluid/viscosity_scheme and the solver/
+/// keys.
 void declare_parameters(core::ParamSchema& schema);
 
+/// The four tank walls, in the order of FluidConfig::wall_no_slip.
+enum class TankWall { Left = 0, Right = 1, Bottom = 2, Top = 3 };
+
 struct FluidConfig {
-  double rho = 1000.0;              ///< density [kg/m^3]
-  double nu = 1e-6;                 ///< kinematic viscosity [m^2/s]
-  core::Vec2 g{0.0, -9.81};         ///< gravity [m/s^2]
-  bool no_slip = false;             ///< tank walls: no-slip (true) or free-slip (false)
+  double rho = 1000.0;       ///< density [kg/m^3]
+  double nu = 1e-6;          ///< kinematic viscosity [m^2/s]
+  core::Vec2 g{0.0, -9.81};  ///< gravity [m/s^2]
+  bool no_slip = false;      ///< tank walls: no-slip (true) or free-slip (false)
+  /// Per wall (left, right, bottom, top): its own condition, overriding no_slip; empty: no_slip.
+  std::array<std::optional<bool>, 4> wall_no_slip{};
   bool implicit_viscosity = false;  ///< fluid/viscosity_scheme: implicit (doc/viscous.md)
   double h = 0.0;                   ///< cell size [m] (grid/cell_size)
 };
 /// Reads the fluid/ keys and grid/cell_size (declared by grid::declare_parameters).
 FluidConfig config_from(const core::Params& params);
+
+/// Whether tank wall `wall` is no-slip: its own setting, else FluidConfig::no_slip.
+inline bool no_slip_at(const FluidConfig& cfg, TankWall wall) {
+  const auto& own = cfg.wall_no_slip[static_cast<std::size_t>(wall)];
+  return own ? *own : cfg.no_slip;
+}
 
 /// Ghost width the fluid stencils need (viscosity, projection, divergence): 1. Velocity
 /// extension `layers` deep needs no more: it forwards the halo after every layer.

@@ -8,7 +8,9 @@
 // (replicated): this first version is for runs and tests on one rank; distributing the rows over
 // the decomposition is left for the hook into the step (doc/viscous.md).
 #include <array>
+#include <cstddef>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "picdem/core/vec2.hpp"
@@ -34,13 +36,21 @@ struct ViscousBody {
   }
 };
 
-/// The tank walls (all four alike): no-slip (0), free-slip (normal 0, zero tangential gradient)
-/// or a prescribed velocity (a function of the wall point; used for exact-solution boundaries).
+/// The tank walls: no-slip (0), free-slip (normal 0, zero tangential gradient) or a prescribed
+/// velocity (a function of the wall point; used for exact-solution boundaries). `kind` holds for
+/// every wall without its own entry in `side` (left, right, bottom, top; TankWall order).
 enum class WallKind { NoSlip, FreeSlip, Prescribed };
 struct ViscousWalls {
   WallKind kind = WallKind::NoSlip;
   std::function<core::Vec2(const core::Vec2&)> velocity;  ///< for Prescribed
+  std::array<std::optional<WallKind>, 4> side{};
+  WallKind kind_at(TankWall wall) const {
+    const auto& own = side[static_cast<std::size_t>(wall)];
+    return own ? *own : kind;
+  }
 };
+/// The walls of the step's fluid configuration (fluid/walls and fluid/wall_<side>).
+ViscousWalls viscous_walls_of(const FluidConfig& cfg);
 
 /// The tank: cells of size h, nx x nz, lower-left corner at origin.
 struct ViscousGrid {
