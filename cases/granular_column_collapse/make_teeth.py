@@ -1,0 +1,27 @@
+#!/usr/bin/env python3
+"""Prints the `obstacles` section of case.yaml: the rough floor as one obstacle per tooth.
+
+Teeth TOOTH_H high (valleys at TOOTH_H / 2, tips at TOOTH_H) every TOOTH_P along the tank, each a
+counter-clockwise pentagon from z = 0. One polygon for the whole sawtooth has the same surface,
+but the DEM gives a solid one contact per obstacle (its closest point), so a grain resting on two
+teeth would get one, and it tests every grain near the floor against all its edges (600 here):
+one obstacle per tooth lets the bounding-box test skip all but the teeth a grain reaches.
+usage: python3 make_teeth.py   (paste the output over the obstacles section of case.yaml)
+"""
+TANK_L, TOOTH_H, TOOTH_P = 1.5, 0.004, 0.005
+
+
+def fmt(v):
+    return "[" + ", ".join(f"{a:.6g}" for a in v) + "]"
+
+
+def main():
+    print("obstacles:")
+    for k in range(round(TANK_L / TOOTH_P)):
+        x0, x1 = k * TOOTH_P, (k + 1) * TOOTH_P
+        print(f"  tooth_{k}:\n    type: polygon\n    x: {fmt([x0, x1, x1, x0 + TOOTH_P / 2, x0])}\n"
+              f"    z: {fmt([0, 0, TOOTH_H / 2, TOOTH_H, TOOTH_H / 2])}")
+
+
+if __name__ == "__main__":
+    main()
