@@ -91,13 +91,15 @@ SolidsAtStart place_solids(const Layout& L, const StepSettings& set, const dem::
 
 namespace {
 
-// The particles' occupancy S before the open-share correction, from the cache when current.
+// The particles' occupancy S before the open-share correction and their count per cell, from
+// the cache when current.
 void particle_occupancy(const Layout& L, const StepSettings& set,
                         const particles::ParticleSet& particles, ParticleOccupancy& occ) {
   if (occ.current) return;
   const int per_cell = set.particles.per_cell_1d * set.particles.per_cell_1d;
   if (occ.S.data().empty()) occ.S = grid::CellField(L.d, Stagger::Cell, 0.0);
-  particles::occupancy(particles, L.d, L.halo, per_cell, occ.S);
+  if (occ.count.data().empty()) occ.count = grid::GridArray<int>(L.d, Stagger::Cell, 0);
+  particles::occupancy(particles, L.d, L.halo, per_cell, occ.S, &occ.count);
   occ.current = true;
 }
 
@@ -109,12 +111,10 @@ void mark_cells(const Layout& L, const StepSettings& set, const geometry::CutCel
                 const particles::ParticleSet& particles, ParticleOccupancy& occ,
                 fluid::FluidState& fluid) {
   core::ScopedTimer timer("transfer: mark cells");
-  grid::GridArray<int> count(L.d, Stagger::Cell, 0);
-  particles::count_per_cell(particles, L.halo, count);
   particle_occupancy(L, set, particles, occ);
   fluid.occupancy = occ.S;
   occ.current = false;  // the particles move before the next use
-  fluid::mark_cells(count, set.has_bodies ? &cut : nullptr, L.d, L.halo, set.ghost_fluid,
+  fluid::mark_cells(occ.count, set.has_bodies ? &cut : nullptr, L.d, L.halo, set.ghost_fluid,
                     set.theta_min, fluid);
 }
 
@@ -318,11 +318,16 @@ void advect_particles(const Layout& L, const StepSettings& set, long long step,
   particles::count_per_cell(particles, L.halo, count);
   std::function<bool(Vec2)> reject;
   if (solids) reject = [&](Vec2 p) { return locator.inside(p); };
-  if (solids)
-    particles::reseed(particles, set.particles, L.d, count, fluid::reseed_cells(f.cells, cut), f.u,
-                      f.w, step, reject);
-  else
-    particles::reseed(particles, set.particles, L.d, count, f.cells, f.u, f.w, step, reject);
+  // The states are read only for cells below min_per_cell: without that bound, the fluid's own.
+  fluid::CellStates cut_states;
+  const fluid::CellStates* states = &f.cells;
+  if (solids && set.particles.min_per_cell > 0) {
+    cut_states = fluid::reseed_cells(f.cells, cut);
+    states = &cut_states;
+  }
+  // Rank by rank (reseed has no collective): a rank with nothing to change is left as it is.
+  if (particles::reseed_changes(set.particles, L.d, count, *states))
+    particles::reseed(particles, set.particles, L.d, count, *states, f.u, f.w, step, reject);
 }
 
 Diagnostics record_diagnostics(const Layout& L, const StepSettings& set, double t, long long step,

@@ -54,11 +54,13 @@ struct SolidsAtStart {
   geometry::CutCells cut;
 };
 
-/// The particles' occupancy before the open-share correction (particles::occupancy), computed
-/// once for the particles where a step leaves them: by the diagnostics, then read by the next
-/// step's cells. `current` is cleared when the particles move (the cells of a step take it).
+/// The particles' occupancy before the open-share correction (particles::occupancy) and their
+/// count per cell, computed in one pass for the particles where a step leaves them: by the
+/// diagnostics, then read by the next step's cells. `current` is cleared when the particles move
+/// (the cells of a step take it).
 struct ParticleOccupancy {
   grid::CellField S;
+  grid::GridArray<int> count;
   bool current = false;
 };
 

@@ -19,9 +19,10 @@ double tent_mass_inside(double c, double n) {
 }  // namespace
 
 void occupancy(const ParticleSet& ps, const grid::Decomposition& d, const grid::Halo& halo,
-               int particles_per_cell, grid::CellField& S) {
+               int particles_per_cell, grid::CellField& S, grid::GridArray<int>* count) {
   const auto& spec = d.spec();
   S.fill(0.0);
+  if (count) count->fill(0);
   const detail::Axes centres = detail::cell_axes(spec);
   for (std::size_t n = 0; n < ps.x.size(); ++n) {
     const detail::Stencil st = detail::unclamped_stencil(centres, {ps.x[n], ps.z[n]});
@@ -30,6 +31,11 @@ void occupancy(const ParticleSet& ps, const grid::Decomposition& d, const grid::
     for (int b = 0; b < 2; ++b)
       for (int a = 0; a < 2; ++a)
         if (S.in_storage(st.i + a, st.k + b)) S(st.i + a, st.k + b) += wx[a] * wz[b];
+    if (count) detail::count_one(ps, n, spec, *count);
+  }
+  if (count) {
+    halo.reverse_add(*count);
+    halo.forward(*count);
   }
   halo.reverse_add(S);
   const auto own = d.owned_cells();

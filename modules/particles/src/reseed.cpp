@@ -31,6 +31,19 @@ bool interior_fluid(const grid::GridArray<signed char>& state, const grid::GridS
 
 }  // namespace
 
+bool reseed_changes(const ParticleConfig& config, const grid::Decomposition& d,
+                    const grid::GridArray<int>& count,
+                    const grid::GridArray<signed char>& cell_state) {
+  const grid::GridSpec& s = d.spec();
+  const core::IndexBox cells = d.owned_cells();
+  for (int k = cells.k0; k < cells.k1; ++k)
+    for (int i = cells.i0; i < cells.i1; ++i)
+      if (count(i, k) > config.max_per_cell ||
+          (count(i, k) < config.min_per_cell && interior_fluid(cell_state, s, i, k)))
+        return true;
+  return false;
+}
+
 void reseed(ParticleSet& p, const ParticleConfig& config, const grid::Decomposition& d,
             const grid::GridArray<int>& count, const grid::GridArray<signed char>& cell_state,
             const grid::FaceField& u, const grid::FaceField& w, long long step,

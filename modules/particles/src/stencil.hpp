@@ -11,6 +11,7 @@
 
 #include "picdem/core/error.hpp"
 #include "picdem/grid/field.hpp"
+#include "picdem/particles/particle_set.hpp"
 
 namespace picdem::particles::detail {
 
@@ -120,6 +121,23 @@ inline double interpolate(const grid::FaceField& f, const Stencil& st, double h,
   ddz = ((1.0 - st.fx) * (f01 - f00) + st.fx * (f11 - f10)) / h;
   return (1.0 - st.fz) * ((1.0 - st.fx) * f00 + st.fx * f10) +
          st.fz * ((1.0 - st.fx) * f01 + st.fx * f11);
+}
+
+/// Adds particle n to the count of its cell (GridSpec::cell_of, clamped to the grid); throws when
+/// that cell lies beyond the count's storage (count_per_cell).
+inline void count_one(const ParticleSet& p, std::size_t n, const grid::GridSpec& s,
+                      grid::GridArray<int>& count) {
+  int i, k;
+  cell_of(s, p.x[n], p.z[n], i, k);
+  i = std::clamp(i, 0, s.nx - 1);
+  k = std::clamp(k, 0, s.nz - 1);
+  if (!count.in_storage(i, k)) {
+    std::ostringstream m;
+    m << "count_per_cell: particle " << p.id[n] << " at (" << p.x[n] << ", " << p.z[n]
+      << ") lies in cell (" << i << ", " << k << ") beyond this rank's halo";
+    throw core::SolverError(m.str());
+  }
+  ++count(i, k);
 }
 
 }  // namespace picdem::particles::detail

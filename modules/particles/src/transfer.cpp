@@ -104,19 +104,7 @@ void count_per_cell(const ParticleSet& p, const grid::Halo& halo, grid::GridArra
 void count_per_cell(const ParticleSet& p, const grid::GridSpec& s, const grid::Halo& halo,
                     grid::GridArray<int>& count) {
   count.fill(0);
-  for (std::size_t n = 0; n < p.size(); ++n) {
-    int i, k;
-    detail::cell_of(s, p.x[n], p.z[n], i, k);
-    i = std::clamp(i, 0, s.nx - 1);
-    k = std::clamp(k, 0, s.nz - 1);
-    if (!count.in_storage(i, k)) {
-      std::ostringstream m;
-      m << "count_per_cell: particle " << p.id[n] << " at (" << p.x[n] << ", " << p.z[n]
-        << ") lies in cell (" << i << ", " << k << ") beyond this rank's halo";
-      throw core::SolverError(m.str());
-    }
-    ++count(i, k);
-  }
+  for (std::size_t n = 0; n < p.size(); ++n) detail::count_one(p, n, s, count);
   halo.reverse_add(count);
   halo.forward(count);
 }

@@ -34,6 +34,13 @@ void reseed(ParticleSet& particles, const ParticleConfig& config,
             const grid::FaceField& w, long long step,
             const std::function<bool(core::Vec2)>& reject = {});
 
+/// True when reseed would change this rank's particles: an owned cell's count is above
+/// max_per_cell, or an interior fluid cell's below min_per_cell (from the counts alone, without
+/// visiting the particles; `count` current as for reseed).
+bool reseed_changes(const ParticleConfig& config, const grid::Decomposition& decomposition,
+                    const grid::GridArray<int>& count,
+                    const grid::GridArray<signed char>& cell_state);
+
 /// Sends every particle to the rank owning its cell (one all-to-all), then sorts the particles
 /// by cell and id (sort_by_cell).
 void migrate(ParticleSet& particles, const grid::Decomposition& decomposition);

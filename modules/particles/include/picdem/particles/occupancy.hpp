@@ -10,8 +10,9 @@ namespace picdem::particles {
 /// S(x_c) = sum_p W(x_c - x_p) / (n_ppc m(x_c)) over owned + halo cells (reverse-added, then
 /// forwarded): W the bilinear tent of half-width h between cell centres, n_ppc the particles per
 /// full cell, m(x_c) the share of the tent's mass inside the tank (1 away from the walls). S = 1
-/// in the bulk and 1/2 on a flat free surface.
+/// in the bulk and 1/2 on a flat free surface. With `count`, also the particles per cell of
+/// count_per_cell (the same values) in the same pass over the particles.
 void occupancy(const ParticleSet& ps, const grid::Decomposition& d, const grid::Halo& halo,
-               int particles_per_cell, grid::CellField& S);
+               int particles_per_cell, grid::CellField& S, grid::GridArray<int>* count = nullptr);
 
 }  // namespace picdem::particles
