@@ -29,6 +29,46 @@ signed char state(const CellStates& cells, int i, int k, int nx, int nz) {
   return cells(i, k);
 }
 
+/// The columns [lo, hi) of each storage row of `cells` between its first and last fluid cell
+/// (lo = hi: none). A face is next to a fluid cell only inside its row's span grown by one
+/// (x faces) or inside the union of its two rows' spans (z faces): loops over the faces that
+/// need a fluid neighbour visit these columns only (the water's band, not the whole window).
+class FluidSpans {
+ public:
+  explicit FluidSpans(const CellStates& cells) : box_(cells.storage()) {
+    spans_.assign(static_cast<std::size_t>(box_.nz()), {0, 0});
+    for (int k = box_.k0; k < box_.k1; ++k) {
+      int lo = box_.i1, hi = box_.i0;
+      for (int i = box_.i0; i < box_.i1; ++i)
+        if (cells(i, k) == kFluid) lo = std::min(lo, i), hi = i + 1;
+      if (lo < hi) spans_[static_cast<std::size_t>(k - box_.k0)] = {lo, hi};
+    }
+  }
+  /// Faces (i, k) of an x-face box whose cells (i - 1, k), (i, k) may hold fluid: [i0, i1).
+  std::pair<int, int> x_faces(int k, const core::IndexBox& faces) const {
+    const auto [lo, hi] = row(k);
+    if (lo >= hi) return {faces.i0, faces.i0};
+    return {std::max(faces.i0, lo), std::max(std::max(faces.i0, lo), std::min(faces.i1, hi + 1))};
+  }
+  /// Faces (i, k) of a z-face box whose cells (i, k - 1), (i, k) may hold fluid.
+  std::pair<int, int> z_faces(int k, const core::IndexBox& faces) const {
+    const auto [la, ha] = row(k - 1);
+    const auto [lb, hb] = row(k);
+    const int lo = la < ha ? (lb < hb ? std::min(la, lb) : la) : lb;
+    const int hi = la < ha ? (lb < hb ? std::max(ha, hb) : ha) : hb;
+    if (!(la < ha) && !(lb < hb)) return {faces.i0, faces.i0};
+    return {std::max(faces.i0, lo), std::max(std::max(faces.i0, lo), std::min(faces.i1, hi))};
+  }
+
+ private:
+  std::pair<int, int> row(int k) const {
+    if (k < box_.k0 || k >= box_.k1) return {0, 0};
+    return spans_[static_cast<std::size_t>(k - box_.k0)];
+  }
+  core::IndexBox box_;
+  std::vector<std::pair<int, int>> spans_;
+};
+
 }  // namespace
 
 void declare_parameters(core::ParamSchema& schema) {
@@ -273,12 +313,18 @@ SurfaceFractions surface_fractions(const grid::CellField& phi, const CellStates&
     // theta = phi_fluid / (phi_fluid - phi_air): where phi crosses 0 between the two centres
     return std::min(1.0, std::max(theta_min, pf / (pf - pa)));
   };
+  // theta is 1 unless one of the face's cells is fluid: only the water's band is visited.
+  const FluidSpans spans(cells);
   const auto& bx = t.theta_x.storage();
-  for (int k = bx.k0; k < bx.k1; ++k)
-    for (int i = bx.i0; i < bx.i1; ++i) t.theta_x(i, k) = theta(i - 1, k, i, k);
+  for (int k = bx.k0; k < bx.k1; ++k) {
+    const auto [i0, i1] = spans.x_faces(k, bx);
+    for (int i = i0; i < i1; ++i) t.theta_x(i, k) = theta(i - 1, k, i, k);
+  }
   const auto& bz = t.theta_z.storage();
-  for (int k = bz.k0; k < bz.k1; ++k)
-    for (int i = bz.i0; i < bz.i1; ++i) t.theta_z(i, k) = theta(i, k - 1, i, k);
+  for (int k = bz.k0; k < bz.k1; ++k) {
+    const auto [i0, i1] = spans.z_faces(k, bz);
+    for (int i = i0; i < i1; ++i) t.theta_z(i, k) = theta(i, k - 1, i, k);
+  }
   return t;
 }
 
@@ -295,9 +341,11 @@ void project(FaceField& u, FaceField& w, const grid::CellField& p, const CellSta
     return a != kSolid && b != kSolid && (a == kFluid || b == kFluid);
   };
   const double s = dt / (cfg.rho * cfg.h);
+  const FluidSpans spans(cells);  // open faces have a fluid cell: the water's band only
   const auto& bu = u.owned();
-  for (int k = bu.k0; k < bu.k1; ++k)
-    for (int i = bu.i0; i < bu.i1; ++i) {
+  for (int k = bu.k0; k < bu.k1; ++k) {
+    const auto [i0, i1] = spans.x_faces(k, bu);
+    for (int i = i0; i < i1; ++i) {
       if (E.E_x(i, k) <= 0.0 || !open(cells(i - 1, k), cells(i, k))) continue;
       double pl = p_of(i - 1, k), pr = p_of(i, k);
       if (surface && surface->theta_x(i, k) < 1.0) {
@@ -307,9 +355,11 @@ void project(FaceField& u, FaceField& w, const grid::CellField& p, const CellSta
       // u = u~ - dt/rho (p_{i} - p_{i-1}) / h
       u(i, k) -= s * (pr - pl);
     }
+  }
   const auto& bw = w.owned();
-  for (int k = bw.k0; k < bw.k1; ++k)
-    for (int i = bw.i0; i < bw.i1; ++i) {
+  for (int k = bw.k0; k < bw.k1; ++k) {
+    const auto [i0, i1] = spans.z_faces(k, bw);
+    for (int i = i0; i < i1; ++i) {
       if (E.E_z(i, k) <= 0.0 || !open(cells(i, k - 1), cells(i, k))) continue;
       double pb = p_of(i, k - 1), pt = p_of(i, k);
       if (surface && surface->theta_z(i, k) < 1.0) {
@@ -319,19 +369,28 @@ void project(FaceField& u, FaceField& w, const grid::CellField& p, const CellSta
       // w = w~ - dt/rho (p_{k} - p_{k-1}) / h
       w(i, k) -= s * (pt - pb);
     }
+  }
 }
 
 void fluid_faces(const CellStates& cells, const Apertures& E, grid::GridArray<signed char>& u_valid,
                  grid::GridArray<signed char>& w_valid) {
   auto fluid = [&](int i, int k) { return cells.in_storage(i, k) && cells(i, k) == kFluid; };
+  // 0 away from fluid cells: only the water's band is visited
+  const FluidSpans spans(cells);
+  u_valid.fill(0);
+  w_valid.fill(0);
   const auto& bu = u_valid.storage();
-  for (int k = bu.k0; k < bu.k1; ++k)
-    for (int i = bu.i0; i < bu.i1; ++i)
+  for (int k = bu.k0; k < bu.k1; ++k) {
+    const auto [i0, i1] = spans.x_faces(k, bu);
+    for (int i = i0; i < i1; ++i)
       u_valid(i, k) = E.E_x(i, k) > 0.0 && (fluid(i - 1, k) || fluid(i, k)) ? 1 : 0;
+  }
   const auto& bw = w_valid.storage();
-  for (int k = bw.k0; k < bw.k1; ++k)
-    for (int i = bw.i0; i < bw.i1; ++i)
+  for (int k = bw.k0; k < bw.k1; ++k) {
+    const auto [i0, i1] = spans.z_faces(k, bw);
+    for (int i = i0; i < i1; ++i)
       w_valid(i, k) = E.E_z(i, k) > 0.0 && (fluid(i, k - 1) || fluid(i, k)) ? 1 : 0;
+  }
 }
 
 namespace {
@@ -441,15 +500,19 @@ void extend_velocity(FaceField& u, FaceField& w, const grid::GridArray<signed ch
   extend_one(w, wv, layers, halo);
 }
 
-double cfl_time_step(const FaceField& u, const FaceField& w, double h, double cfl, double dt_max,
-                     const core::Comm& comm) {
+double max_face_speed(const FaceField& u, const FaceField& w, const core::Comm& comm) {
   double vmax = 0.0;
   for (const FaceField* f : {&u, &w}) {
     const auto& b = f->owned();
     for (int k = b.k0; k < b.k1; ++k)
       for (int i = b.i0; i < b.i1; ++i) vmax = std::max(vmax, std::abs((*f)(i, k)));
   }
-  vmax = comm.max(vmax);
+  return comm.max(vmax);
+}
+
+double cfl_time_step(const FaceField& u, const FaceField& w, double h, double cfl, double dt_max,
+                     const core::Comm& comm) {
+  const double vmax = max_face_speed(u, w, comm);
   // dt = min(dt_max, CFL h / max|u|)
   return vmax > 0.0 ? std::min(dt_max, cfl * h / vmax) : dt_max;
 }
