@@ -266,7 +266,7 @@ void Simulation::step() {
   if (every > 0 && m.step > 0 && m.step % every == 0) rebalance_cuts(m);
   const Layout L = m.layout();
   fluid::FluidState* fluid = set.has_fluid ? &m.fluid : nullptr;
-  const double speed = max_particle_speed(m.particles, m.comm);
+  const double speed = cfl_extra_speed(set, m.particles, m.dem.get(), m.comm);
   const double dt = choose_time_step(set, m.t, m.step, fluid, speed, m.comm);  // time step
   SolidsAtStart solids;                                                        // at X^n
   fluid::SolveStats solve;

@@ -27,6 +27,7 @@ StepSettings step_settings_from(const core::Params& params) {
   s.spec = grid::spec_from(params);
   s.particles = particles::config_from(params);
   s.cfl = params.real("time/cfl");
+  s.cfl_from_particles = params.string("time/cfl_speed") == "particles";
   s.dt_max = params.real("time/dt_max");
   s.dt_min = params.real("time/dt_min");
   s.t_end = params.real("time/end");
@@ -55,19 +56,34 @@ double max_particle_speed(const particles::ParticleSet& P, const core::Comm& com
   return comm.max(vmax);
 }
 
+double max_solid_speed(const dem::DemSolver* dem, const core::Comm& comm) {
+  double vmax = 0.0;
+  if (dem)
+    for (const auto& s : dem->owned())
+      vmax = std::max(vmax, std::sqrt(s.v.x * s.v.x + s.v.z * s.v.z) +
+                                std::abs(s.omega) * dem->shape_of(s.id)->bounding_radius());
+  return comm.max(vmax);
+}
+
+double cfl_extra_speed(const StepSettings& set, const particles::ParticleSet& particles,
+                       const dem::DemSolver* dem, const core::Comm& comm) {
+  return set.cfl_from_particles ? max_particle_speed(particles, comm) : max_solid_speed(dem, comm);
+}
+
 double choose_time_step(const StepSettings& set, double t, long long step,
-                        const fluid::FluidState* fluid, double particle_speed,
-                        const core::Comm& comm) {
+                        const fluid::FluidState* fluid, double speed, const core::Comm& comm) {
   // The last step is not shortened to land on time/end: the run ends with the first step that
   // reaches it, so a run continued to a later end takes the steps of one run made to that end.
   const double dt_max = set.dt_max;
   if (!fluid) return dt_max;
-  // The particles may outrun the grid (FLIP): the fastest of either sets the CFL limit.
+  // time/cfl_speed particles: the particles may outrun the grid (FLIP): the fastest of either
+  // sets the CFL limit. grid: the particles move with the grid's velocity (advect), so that sets
+  // it, with the solids' surfaces, which move the cut cells (doc/coupling.md).
   const double h = set.spec.h;
   double dt =
       std::min(dt_max, fluid::cfl_time_step(fluid->u, fluid->w, h, set.cfl, set.dt_max, comm));
   dt = std::min(dt, fluid::viscous_time_limit(set.fluid));  // explicit viscosity's stability
-  if (particle_speed > 0.0) dt = std::min(dt, set.cfl * h / particle_speed);
+  if (speed > 0.0) dt = std::min(dt, set.cfl * h / speed);
   if (!(dt >= set.dt_min) && set.t_end - t > set.dt_min) {
     std::ostringstream m;
     m << "step " << step << " at t = " << t << " s: the time step fell to " << dt
@@ -374,6 +390,7 @@ Diagnostics record_diagnostics(const Layout& L, const StepSettings& set, double 
     const geometry::CutCells* cut = set.has_bodies ? &solids->cut : nullptr;
     if (cut) fluid::open_share_correction(fluid->occupancy, *cut, L.d);
     g.fluid_volume = fluid::occupied_area(fluid->occupancy, L.d, comm, cut);
+    if (!set.cfl_from_particles) g.grid_speed = fluid::max_face_speed(fluid->u, fluid->w, comm);
   }
   for (double x : set.level_probes)
     g.levels.push_back(fluid ? fluid->surface_height(x) : std::nan(""));

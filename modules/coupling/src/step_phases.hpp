@@ -31,6 +31,7 @@ struct StepSettings {
   fluid::FluidConfig fluid;
   particles::ParticleConfig particles;
   double cfl = 0.5, dt_max = 0.0, dt_min = 0.0, t_end = 0.0;  ///< time/*
+  bool cfl_from_particles = true;  ///< time/cfl_speed: particles (else grid and solids)
   bool has_fluid = false;
   bool has_solids = false;          ///< the run has a DEM (solids; or no water)
   bool has_bodies = false;          ///< solids or obstacles anywhere in the run (every rank alike)
@@ -67,11 +68,19 @@ struct ParticleOccupancy {
 /// Collective: the largest particle speed |v| over all ranks (0 without particles).
 double max_particle_speed(const particles::ParticleSet& particles, const core::Comm& comm);
 
-/// time step: CFL on the grid velocity (fluid: nullptr without water) and on the particles'
-/// fastest speed, capped by dt_max and the end time; a collapse below dt_min is a blown-up run.
+/// Collective: the largest surface speed |v| + |omega| R of the solids (R the bounding radius)
+/// over all ranks; 0 without solids.
+double max_solid_speed(const dem::DemSolver* dem, const core::Comm& comm);
+
+/// The speed besides the grid's face velocities that bounds the step (time/cfl_speed): the
+/// particles' fastest speed, or the solids' fastest surface speed. Collective.
+double cfl_extra_speed(const StepSettings& set, const particles::ParticleSet& particles,
+                       const dem::DemSolver* dem, const core::Comm& comm);
+
+/// time step: CFL on the grid velocity (fluid: nullptr without water) and on `speed`
+/// (cfl_extra_speed), capped by dt_max; a collapse below dt_min is a blown-up run.
 double choose_time_step(const StepSettings& set, double t, long long step,
-                        const fluid::FluidState* fluid, double particle_speed,
-                        const core::Comm& comm);
+                        const fluid::FluidState* fluid, double speed, const core::Comm& comm);
 
 /// geometry: solids at X^n -> cut cells and the fluid's apertures E.
 SolidsAtStart place_solids(const Layout& L, const StepSettings& set, const dem::DemSolver* dem,

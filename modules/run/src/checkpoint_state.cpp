@@ -129,13 +129,16 @@ CheckpointHeader read_checkpoint(const CheckpointParts& parts, const std::string
   return head;
 }
 
-void check_step(const coupling::Diagnostics& g, double h, bool has_fluid, const dem::DemSolver* dem,
-                const core::Comm& comm) {
-  // CFL far exceeded: |v| dt > 2 h for the fastest particle.
-  if (has_fluid && g.max_speed * g.dt > 2.0 * h) {
+void check_step(const coupling::Diagnostics& g, double h, bool has_fluid, bool grid_speed,
+                const dem::DemSolver* dem, const core::Comm& comm) {
+  // CFL far exceeded: |v| dt > 2 h for the fastest particle, or for the grid velocity that
+  // advected the particles.
+  const double v = grid_speed ? g.grid_speed : g.max_speed;
+  if (has_fluid && v * g.dt > 2.0 * h) {
     std::ostringstream m;
-    m << "step " << g.step << " at t = " << g.t << " s: a particle moved " << g.max_speed * g.dt / h
-      << " cells in one step (speed " << g.max_speed << " m/s, dt " << g.dt
+    m << "step " << g.step << " at t = " << g.t
+      << " s: " << (grid_speed ? "the grid velocity moved a particle " : "a particle moved ")
+      << v * g.dt / h << " cells in one step (speed " << v << " m/s, dt " << g.dt
       << " s); more than 2 cells means the CFL condition is far exceeded: the run has "
       << "blown up";
     throw core::SolverError(m.str());

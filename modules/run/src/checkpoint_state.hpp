@@ -36,10 +36,11 @@ void write_checkpoint(const CheckpointParts& parts, const CheckpointHeader& head
 CheckpointHeader read_checkpoint(const CheckpointParts& parts, const std::string& path);
 
 /// Collective, after every step (g: its diagnostics): throws core::SolverError naming the step
-/// when the step blew up: a particle moved more than 2 h (CFL far exceeded), or a solid's real
-/// boundary overlaps another solid, a wall or an obstacle (DEM overlap delta beyond the
-/// imaginary gap, eq. 19).
-void check_step(const coupling::Diagnostics& g, double h, bool has_fluid, const dem::DemSolver* dem,
-                const core::Comm& comm);
+/// when the step blew up: a particle moved more than 2 h (CFL far exceeded; the particles' speed
+/// times dt, or with `grid_speed` (time/cfl_speed: grid) the grid's, which moves them), or a
+/// solid's real boundary overlaps another solid, a wall or an obstacle (DEM overlap delta beyond
+/// the imaginary gap, eq. 19).
+void check_step(const coupling::Diagnostics& g, double h, bool has_fluid, bool grid_speed,
+                const dem::DemSolver* dem, const core::Comm& comm);
 
 }  // namespace picdem::run

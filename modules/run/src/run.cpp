@@ -57,6 +57,7 @@ void Run::run(long long max_steps) {
   const auto m = sim_.modules();
   const core::Comm& comm = m.comm;
   const double t_end = m.params.real("time/end"), h = m.decomposition.spec().h;
+  const bool grid_speed = m.params.string("time/cfl_speed") == "grid";  // the CFL speed's source
   core::Progress progress(comm, sim_.time(), t_end, m.params.real("output/progress_seconds"));
   if (output_ && !restarted_) output_->frame(sim_, true);
   const io::CheckpointConfig& ck = checkpoint_;
@@ -66,7 +67,7 @@ void Run::run(long long max_steps) {
   while (sim_.time() < t_end * (1.0 - 1e-12) && (max_steps <= 0 || sim_.step_count() < max_steps)) {
     sim_.step();
     const coupling::Diagnostics& diag = sim_.diagnostics();
-    check_step(diag, h, sim_.has_fluid(), sim_.dem(), comm);
+    check_step(diag, h, sim_.has_fluid(), grid_speed, sim_.dem(), comm);
     if (output_) {
       output_->record(diag);
       if (output_->forces_due(sim_.time())) output_->forces(sim_.time(), sim_.body_forces());

@@ -43,6 +43,7 @@ struct Diagnostics {
   long long particles = 0;
   double max_speed = 0.0;
   double solid_kinetic_energy = 0.0;
+  double grid_speed = 0.0;      ///< largest |u|, |w| on the faces after the step [m/s] (not in csv)
   std::vector<double> levels;   ///< free-surface height at output/level_probes [m]
   long long solids_in_box = 0;  ///< solids with their centre in output/solid_count_box
 

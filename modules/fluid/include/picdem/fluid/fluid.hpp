@@ -121,6 +121,9 @@ void extend_velocity(grid::FaceField& u, grid::FaceField& w,
                      const grid::GridArray<signed char>& w_valid, int layers,
                      const grid::Halo& halo);
 
+/// max(|u|, |w|) over all ranks' owned faces.
+double max_face_speed(const grid::FaceField& u, const grid::FaceField& w, const core::Comm& comm);
+
 /// dt = min(dt_max, cfl h / max|u|) over all ranks' owned faces.
 double cfl_time_step(const grid::FaceField& u, const grid::FaceField& w, double h, double cfl,
                      double dt_max, const core::Comm& comm);
