@@ -15,6 +15,10 @@ Handle mpio_access(const core::Comm& comm) {
   Handle p(check(H5Pcreate(H5P_FILE_ACCESS), "H5Pcreate(FILE_ACCESS)"), H5Pclose);
   check_status(H5Pset_fapl_mpio(p, comm.raw(), MPI_INFO_NULL), "H5Pset_fapl_mpio");
   check_status(H5Pset_coll_metadata_write(p, 1), "H5Pset_coll_metadata_write");
+  // The 1.8 file format: attributes above 64 kB (a resolved case with hundreds of obstacles or
+  // solids, per-rank checksum lists on thousands of ranks) go to dense storage instead of failing
+  // in the object header; readable by HDF5 1.8 and later (h5py, ParaView).
+  check_status(H5Pset_libver_bounds(p, H5F_LIBVER_V18, H5F_LIBVER_V18), "H5Pset_libver_bounds");
   return p;
 }
 
