@@ -1,5 +1,5 @@
 #pragma once
-// Shared set-up of the fluid tests: the case parameters of a small tank.
+// Shared set-up of the fluid tests: the case parameters of a small tank, an all-fluid grid.
 #include <string>
 #include <vector>
 
@@ -18,6 +18,17 @@ inline core::Params tank_params(double length, double height, double h,
                            "\n  height: " + std::to_string(height) +
                            "\n  cell_size: " + std::to_string(h) + "\n";
   return core::read_case_text(yaml, "fluid test", overrides, schema);
+}
+
+/// Every cell of the grid fluid, the ghost cells beyond the tank solid.
+inline fluid::CellStates all_fluid(const grid::Decomposition& d) {
+  fluid::CellStates c(d, grid::Stagger::Cell, static_cast<signed char>(grid::CellState::Solid));
+  const auto& b = c.storage();
+  for (int k = b.k0; k < b.k1; ++k)
+    for (int i = b.i0; i < b.i1; ++i)
+      if (i >= 0 && k >= 0 && i < d.spec().nx && k < d.spec().nz)
+        c(i, k) = static_cast<signed char>(grid::CellState::Fluid);
+  return c;
 }
 
 }  // namespace picdem::fluid_test

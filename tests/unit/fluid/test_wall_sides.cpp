@@ -21,6 +21,7 @@ using namespace picdem;
 using namespace picdem::grid;
 using core::Vec2;
 using fluid::TankWall;
+using fluid_test::all_fluid;
 
 namespace {
 
@@ -30,16 +31,6 @@ constexpr double kUmax = kG * kH * kH / (2.0 * kNu);
 /// Half-Poiseuille: no-slip floor at z = 0, free-slip lid at z = H.
 double half_poiseuille(double z) {
   return kG / (2.0 * kNu) * z * (2.0 * kH - z);
-}
-
-fluid::CellStates all_fluid(const Decomposition& d) {
-  fluid::CellStates c(d, Stagger::Cell, static_cast<signed char>(CellState::Solid));
-  const auto& b = c.storage();
-  for (int k = b.k0; k < b.k1; ++k)
-    for (int i = b.i0; i < b.i1; ++i)
-      if (i >= 0 && k >= 0 && i < d.spec().nx && k < d.spec().nz)
-        c(i, k) = static_cast<signed char>(CellState::Fluid);
-  return c;
 }
 
 double order(double coarse, double fine) {

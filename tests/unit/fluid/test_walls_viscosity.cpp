@@ -5,11 +5,13 @@
 
 #include <cmath>
 
+#include "fluid_test_support.hpp"
 #include "picdem/core/rng.hpp"
 #include "picdem/fluid/fluid.hpp"
 
 using namespace picdem;
 using namespace picdem::grid;
+using fluid_test::all_fluid;
 
 namespace {
 
@@ -17,16 +19,6 @@ GridSpec make_spec(int nx, int nz, double h) {
   GridSpec s;
   s.nx = nx, s.nz = nz, s.h = h;
   return s;
-}
-
-fluid::CellStates all_fluid(const Decomposition& d) {
-  fluid::CellStates c(d, Stagger::Cell, static_cast<signed char>(CellState::Solid));
-  const auto& b = c.storage();
-  for (int k = b.k0; k < b.k1; ++k)
-    for (int i = b.i0; i < b.i1; ++i)
-      if (i >= 0 && k >= 0 && i < d.spec().nx && k < d.spec().nz)
-        c(i, k) = static_cast<signed char>(CellState::Fluid);
-  return c;
 }
 
 }  // namespace
