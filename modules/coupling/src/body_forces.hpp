@@ -10,6 +10,7 @@
 #include "picdem/fluid/fluid.hpp"
 #include "picdem/geometry/cut_cells.hpp"
 #include "picdem/grid/field.hpp"
+#include "viscous_bodies.hpp"
 
 namespace picdem::coupling {
 

@@ -312,25 +312,19 @@ const dem::DemSolver* Simulation::dem() const {
   return m_->dem.get();
 }
 
-std::vector<core::SolidLoads> Simulation::fluid_loads() const {
+// The pressure loads of the last step on every solid, gathered from their owners, by id.
+std::vector<BodyForces> Simulation::body_forces() const {
   const Impl& s = *m_;
   std::vector<double> mine;
   for (const auto& l : s.fluid_loads)
     mine.insert(mine.end(), {static_cast<double>(l.id), l.force.x, l.force.z, l.torque});
   const auto all = s.comm.all_gather(mine);
-  std::vector<core::SolidLoads> out;
+  std::vector<core::SolidLoads> pressure;
   for (std::size_t n = 0; n + 4 <= all.size(); n += 4)
-    out.push_back({static_cast<std::int64_t>(all[n]), {all[n + 1], all[n + 2]}, all[n + 3]});
-  std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
-  return out;
-}
-
-const ViscousExchange& Simulation::viscous_loads() const {
-  return m_->viscous;
-}
-
-std::vector<BodyForces> Simulation::body_forces() const {
-  return coupling::body_forces(fluid_loads(), m_->obstacle_loads, m_->viscous);
+    pressure.push_back({static_cast<std::int64_t>(all[n]), {all[n + 1], all[n + 2]}, all[n + 3]});
+  std::sort(pressure.begin(), pressure.end(),
+            [](const auto& a, const auto& b) { return a.id < b.id; });
+  return coupling::body_forces(pressure, s.obstacle_loads, s.viscous);
 }
 
 const std::vector<geometry::Obstacle>& Simulation::obstacles() const {

@@ -174,6 +174,7 @@ ViscousExchange add_forces(const Layout& L, const fluid::FluidConfig& cfg, bool 
     const auto step = fluid::apply_viscosity_implicit(f.u, f.w, f.cells, dt, cfg, L.d, L.halo,
                                                       viscous_bodies(all, rigid_rows));
     viscous = viscous_exchange(all, step.loads, dem, L.comm);
+    f.viscous_wall_force = step.loads.wall_force;
     fluid::apply_gravity(f.u, f.w, f.cells, dt, cfg);  // on owned faces: the halo follows
     L.halo.forward(f.u);
     L.halo.forward(f.w);

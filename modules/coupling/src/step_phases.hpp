@@ -15,6 +15,7 @@
 #include "picdem/geometry/cut_cells.hpp"
 #include "picdem/grid/field.hpp"
 #include "picdem/particles/particle_set.hpp"
+#include "viscous_bodies.hpp"
 
 namespace picdem::coupling {
 

@@ -81,7 +81,6 @@ ViscousExchange viscous_exchange(const SolidScene& scene, const fluid::ViscousLo
   for (std::size_t o = 0; o < scene.obstacles.size(); ++o)
     out.obstacles.push_back(
         {static_cast<std::int64_t>(o), loads.force[solids + o], loads.torque[solids + o]});
-  out.walls = loads.wall_force;
   return out;
 }
 

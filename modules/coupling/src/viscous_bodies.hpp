@@ -13,6 +13,14 @@
 
 namespace picdem::coupling {
 
+/// The viscous loads of a step (fluid/viscosity_scheme: implicit; doc/viscous.md), per unit
+/// depth: force [N/m], torque [N m/m]; the same on every rank. Empty with the explicit scheme,
+/// which does not compute them, and with zero viscosity. (The walls': FluidState.)
+struct ViscousExchange {
+  std::vector<core::SolidLoads> solids;     ///< every solid, index = id; torque about its centre
+  std::vector<core::SolidLoads> obstacles;  ///< id = the obstacle's index; torque about (0, 0)
+};
+
 /// The scene's solids (shape contains at the pose, velocity and angular velocity of their
 /// state, centre of mass, area; with `rigid_rows` their mass and inertia, which makes them free
 /// bodies of the implicit step), then its obstacles (even-odd point in polygon, at rest).
@@ -26,7 +34,7 @@ SolidScene scene_of_all(const dem::DemSolver* dem,
 
 /// Collective: the loads `loads` of the bodies of viscous_bodies(scene) (scene: scene_of_all)
 /// by solid id, each solid's taken from the rank that owns it and summed over the ranks as the
-/// pressure loads are; the obstacles' and the walls' as computed (the same on every rank).
+/// pressure loads are; the obstacles' as computed (the same on every rank).
 ViscousExchange viscous_exchange(const SolidScene& scene, const fluid::ViscousLoads& loads,
                                  const dem::DemSolver* dem, const core::Comm& comm);
 

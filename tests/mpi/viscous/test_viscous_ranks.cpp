@@ -38,8 +38,8 @@ std::vector<double> run_on(int ranks, const std::vector<std::string>& split) {
     coupling::Simulation sim(comm, params);
     for (int n = 0; n < 20; ++n) sim.step();
     const auto st = sim.dem()->gather_all().at(0);
-    const auto& v = sim.viscous_loads().solids.at(0);
-    out = {st.x.x, st.x.z, st.v.x, st.v.z, st.omega, v.force.x, v.force.z, v.torque};
+    const auto v = sim.body_forces().at(0);
+    out = {st.x.x, st.x.z, st.v.x, st.v.z, st.omega, v.viscous.x, v.viscous.z, v.torque_viscous};
   });
   test_support::broadcast_from_root(out, MPI_DOUBLE);
   return out;

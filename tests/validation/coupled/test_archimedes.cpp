@@ -117,7 +117,8 @@ TEST(Archimedes, NeutralDiskStaysPutAndLoadMatchesPressureIntegral) {
 
   // J p against an independent quadrature of -int p n dl: 720 points on the circle, p from the
   // fluid cell just outside each point, corrected hydrostatically to the point.
-  const auto load = sim.fluid_loads().at(0);
+  const auto row = sim.body_forces().at(0);  // the disk's pressure load J p + F_q
+  const core::SolidLoads load{row.id, row.pressure, row.torque_pressure};
   core::Vec2 integral;
   const int n = 720;
   for (int q = 0; q < n; ++q) {

@@ -57,11 +57,11 @@ Balance sinking_disk(const core::Comm& comm, const char* name, std::vector<std::
     const auto& d = sim.diagnostics();
     if (particles < 0) particles = d.particles;
     const double mass = static_cast<double>(d.particles) * particle_mass + solid_mass;
-    const auto& viscous = sim.viscous_loads();
-    b.impulse += d.dt * (sim.fluid().wall_pressure_force(fluid::config_from(params)) + mass * g -
-                         viscous.walls);  // viscous.walls: the fluid's force on the walls
+    const auto& f = sim.fluid();  // viscous_wall_force: the fluid's force on the walls
+    b.impulse += d.dt * (f.wall_pressure_force(fluid::config_from(params)) + mass * g -
+                         f.viscous_wall_force);
     b.gravity_on_disk += d.dt * solid_mass * g;
-    if (!viscous.solids.empty()) b.viscous_impulse_on_disk += d.dt * viscous.solids.at(0).force;
+    b.viscous_impulse_on_disk += d.dt * sim.body_forces().at(0).viscous;  // 0: explicit scheme
   }
   const auto disk = sim.dem()->gather_all().at(0);
   b.change = total_momentum(sim, comm, particle_mass) - P0;

@@ -55,18 +55,10 @@ struct Diagnostics {
   void set_scalars(const std::vector<double>& v);
 };
 
-/// The viscous loads of a step (fluid/viscosity_scheme: implicit; doc/viscous.md), per unit
-/// depth: force [N/m], torque [N m/m]; the same on every rank. Empty with the explicit scheme,
-/// which does not compute them, and with zero viscosity.
-struct ViscousExchange {
-  std::vector<core::SolidLoads> solids;     ///< every solid, index = id; torque about its centre
-  std::vector<core::SolidLoads> obstacles;  ///< id = the obstacle's index; torque about (0, 0)
-  core::Vec2 walls;                         ///< on the tank walls
-};
-
 /// One row of forces.csv (doc/output.md): the fluid's loads on a solid or obstacle over the last
 /// step, per unit depth. Pressure: J p^{n+1} + F_q (eq. 6); viscous: ViscousExchange (zero with
 /// the explicit scheme). Torques about the solid's centre of mass, an obstacle's about (0, 0).
+/// The viscous force on the tank walls: fluid::FluidState::viscous_wall_force.
 struct BodyForces {
   std::int64_t id = 0;                                 ///< solid id, or obstacle index
   bool obstacle = false;                               ///< a fixed obstacle
@@ -121,7 +113,8 @@ class Simulation {
   const core::Params& params() const;
 
   // Read-only access to the modules' state (their probes: fluid::FluidState::pressure_at,
-  // wall_pressure_force, max_grid_speed, surface_height; dem::DemSolver::gather_all,
+  // wall_pressure_force, viscous_wall_force, max_grid_speed, surface_height;
+  // dem::DemSolver::gather_all,
   // max_contact_overlap; particles::velocity_sum).
 
   /// The fluid's grid state; throws std::logic_error when the case has no water.
@@ -133,11 +126,8 @@ class Simulation {
   /// The fixed obstacles of the case.
   const std::vector<geometry::Obstacle>& obstacles() const;
   bool has_fluid() const;
-  /// The current collision and fluid loads on every solid (ordered by id), on every rank.
-  std::vector<core::SolidLoads> fluid_loads() const;
-  /// The viscous loads of the last step, given to the solids in eq. 6 (empty: explicit scheme).
-  const ViscousExchange& viscous_loads() const;
-  /// Collective: the fluid's loads of the last step on every solid (by id), then every obstacle.
+  /// Collective: the fluid's loads of the last step on every solid (by id), then every obstacle
+  /// (the rows of forces.csv).
   std::vector<BodyForces> body_forces() const;
 
   /// The modules and the run's records (simulation.cpp); opaque outside it.

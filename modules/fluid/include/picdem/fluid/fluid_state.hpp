@@ -26,6 +26,9 @@ struct FluidState {
   grid::CellField phi;       ///< level set 1/2 - S (open-volume corrected), < 0 in the fluid
   SurfaceFractions surface;  ///< ghost-fluid fractions of the faces crossing the free surface
   Apertures apertures;       ///< open lengths E of the faces (tank walls, cut cells)
+  /// The fluid's viscous force on the tank walls in the last step's implicit viscous solve, per
+  /// unit depth (ViscousLoads::wall_force); zero with the explicit scheme. Not saved.
+  core::Vec2 viscous_wall_force;
 
   /// The history a checkpoint keeps, in one place: f(name, array) for u, w, p (double) and cells
   /// (signed char), each over the storage window. Everything else is recomputed by the step
