@@ -12,7 +12,8 @@ and the toe, one or two grains thick, are left out). Each flank is fitted by lea
 angle is atan(|slope|), and the heap's angle the mean of both flanks. Rest: the angle and height
 0.2 s before the end, the fastest grain and the grains still moving.
 Writes OUT_DIR/angle_of_repose.csv and, with matplotlib, OUT_DIR/angle_of_repose.png.
-usage: analyse.py OUT_DIR
+usage: analyse.py OUT_DIR [MOUTH_Z]   (MOUTH_Z: the mouth's height, 0.17 m by default; 0.34 for
+       cases/angle_of_repose_034)
 """
 import csv
 import math
@@ -107,7 +108,10 @@ def runs(out):
 
 
 def main():
+    global MOUTH_Z
     out = sys.argv[1]
+    if len(sys.argv) > 2:
+        MOUTH_Z = float(sys.argv[2])
     rows = []
     for mu, mur, name, path in runs(out):
         r = at_end(path)
