@@ -91,7 +91,7 @@ struct Simulation::Impl {
   double t = 0.0;
   long long step = 0;
   Diagnostics diag;
-  std::vector<core::SolidLoads> fluid_loads;     // J p + F_q of the last step, owned solids
+  std::vector<core::SolidLoads> fluid_loads;     // J p + F_q of the last step, by id (all ranks)
   ViscousExchange viscous;                       // the last step's viscous loads (implicit scheme)
   std::vector<core::SolidLoads> obstacle_loads;  // J p + F_q of the last step, every obstacle
 
@@ -284,8 +284,8 @@ void Simulation::step() {
     solve = solve_pressure(L, set, solids, collision, dt, *m.pressure, m.fluid);  // pressure
     project(L, set, dt, m.fluid);                                                 // project
     if (!m.obstacles.empty())                                                     // for forces.csv
-      m.obstacle_loads = obstacle_pressure_loads(solids.cut, m.fluid.cells, L.d, m.fluid.p,
-                                                 set.quadrature, m.obstacles.size(), m.comm);
+      m.obstacle_loads = fluid::obstacle_pressure_loads(solids.cut, m.fluid.cells, L.d, m.fluid.p,
+                                                        set.quadrature, m.obstacles.size());
     if (m.dem) m.fluid_loads = advance_solids(m.pressure.get(), fluid, dt, m.viscous, *m.dem);
     const SolidScene after = scene_of(m.dem.get(), m.obstacles);  // solids at X^{n+1}
     grid_to_particles(L, set, solids, after, m.dem.get(), m.fluid, m.particles);    // transfer
@@ -312,19 +312,12 @@ const dem::DemSolver* Simulation::dem() const {
   return m_->dem.get();
 }
 
-// The pressure loads of the last step on every solid, gathered from their owners, by id.
+// Every solid's row once a step with water has given them pressure loads (none in a dry run).
 std::vector<BodyForces> Simulation::body_forces() const {
   const Impl& s = *m_;
-  std::vector<double> mine;
-  for (const auto& l : s.fluid_loads)
-    mine.insert(mine.end(), {static_cast<double>(l.id), l.force.x, l.force.z, l.torque});
-  const auto all = s.comm.all_gather(mine);
-  std::vector<core::SolidLoads> pressure;
-  for (std::size_t n = 0; n + 4 <= all.size(); n += 4)
-    pressure.push_back({static_cast<std::int64_t>(all[n]), {all[n + 1], all[n + 2]}, all[n + 3]});
-  std::sort(pressure.begin(), pressure.end(),
-            [](const auto& a, const auto& b) { return a.id < b.id; });
-  return coupling::body_forces(pressure, s.obstacle_loads, s.viscous);
+  const bool wet = s.dem && s.set.has_fluid;
+  return coupling::body_forces(wet ? s.dem->gather_all() : std::vector<core::SolidState>{},
+                               s.fluid_loads, s.obstacle_loads, s.viscous);
 }
 
 const std::vector<geometry::Obstacle>& Simulation::obstacles() const {

@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <tuple>
 
 namespace picdem::coupling {
@@ -58,106 +57,6 @@ geometry::CutCells cut_cells(const SolidScene& scene, const grid::Decomposition&
     for (int i = bw.i0; i < bw.i1; ++i)
       apertures.E_z(i, k) = std::min(apertures.E_z(i, k), cut.E_z(i, k));
   return cut;
-}
-
-namespace {
-
-// A table of `width` doubles per solid id, summed over ranks (ids are 0 .. n-1).
-struct IdTable {
-  int width;
-  std::vector<double> v;
-  IdTable(std::int64_t n, int w) : width(w), v(static_cast<std::size_t>(n * w), 0.0) {}
-  double* row(std::int64_t id) { return &v[static_cast<std::size_t>(id * width)]; }
-};
-
-std::int64_t solid_count(const SolidScene& scene, const core::Comm& comm) {
-  long long n = 0;
-  for (const auto& st : scene.states) n = std::max(n, static_cast<long long>(st.id) + 1);
-  return comm.max(n);
-}
-
-bool fluid_cell(const fluid::CellStates& cells, int i, int k) {
-  return cells(i, k) == static_cast<signed char>(CellState::Fluid);
-}
-
-// Hydrostatic quadrature load of one piece: -int rho g.(x - x_c) (n, r x n) dl, exact along the
-// piece (arcs included) from its first moments about x_c; 0 without the quadrature.
-std::array<double, 3> quadrature_load(const geometry::WettedPiece& piece,
-                                      const QuadratureOptions& q) {
-  if (!q.hydrostatic) return {0.0, 0.0, 0.0};
-  const Vec2 rg = q.rho * q.g;
-  return {-(rg.x * piece.dx_n_dl.x + rg.z * piece.dz_n_dl.x),
-          -(rg.x * piece.dx_n_dl.z + rg.z * piece.dz_n_dl.z),
-          -(rg.x * piece.d_r_cross_n_dl.x + rg.z * piece.d_r_cross_n_dl.z)};
-}
-
-}  // namespace
-
-std::vector<fluid::SolidCoupling> solid_couplings(
-    const SolidScene& scene, const geometry::CutCells& cut, const fluid::CellStates& cells,
-    const grid::Decomposition& d, const std::vector<core::SolidLoads>& collision,
-    const QuadratureOptions& quadrature, double dt, const core::Comm& comm) {
-  const Vec2 gravity = quadrature.g;
-  const auto n = solid_count(scene, comm);
-  if (n == 0) return {};
-  const auto own = d.owned_cells();
-  const auto& spec = d.spec();
-  // Predicted collision loads of every solid, from their owners, plus the quadrature loads.
-  IdTable coll(n, 3);
-  for (const auto& l : collision) {
-    double* r = coll.row(l.id);
-    r[0] = l.force.x, r[1] = l.force.z, r[2] = l.torque;
-  }
-  // Each owned fluid cell's pieces: their rows a_{s,c} and quadrature loads, the latter added
-  // to the solid's own load and to the table every rank sums for V*.
-  std::map<int, fluid::SolidCoupling> by_body;  // body index -> coupling, in body order
-  std::map<std::pair<int, long long>, std::size_t> slot;
-  for (const auto& piece : cut.pieces) {
-    if (piece.body < 0 || !own.contains(piece.i, piece.k) || !fluid_cell(cells, piece.i, piece.k))
-      continue;
-    auto& c = by_body[piece.body];
-    const long long gid = spec.cell_gid(piece.i, piece.k);
-    auto [it, fresh] = slot.try_emplace({piece.body, gid}, c.cells.size());
-    if (fresh) {
-      c.cells.push_back(gid);
-      c.a.push_back({0.0, 0.0, 0.0});
-    }
-    auto& a = c.a[it->second];
-    a[0] += piece.n_dl.x, a[1] += piece.n_dl.z, a[2] += piece.r_cross_n_dl;
-    const auto q = quadrature_load(piece, quadrature);
-    double* r = coll.row(scene.states[static_cast<std::size_t>(piece.body)].id);
-    for (int m = 0; m < 3; ++m) r[m] += q[m], c.load[static_cast<std::size_t>(m)] += q[m];
-  }
-  comm.sum_in_place(coll.v);
-
-  std::vector<fluid::SolidCoupling> out;
-  for (auto& [body, c] : by_body) {
-    const auto& st = scene.states[static_cast<std::size_t>(body)];
-    c.id = st.id;
-    c.mass = st.mass;
-    c.inertia = st.inertia;
-    const double* f = coll.row(st.id);
-    // V* = V^n + dt M^-1 (F_g + F_coll)   (eq. 6 without the pressure term)
-    c.v_star = {st.v.x + dt * (gravity.x + f[0] / st.mass),
-                st.v.z + dt * (gravity.z + f[1] / st.mass), st.omega + dt * f[2] / st.inertia};
-    out.push_back(std::move(c));
-  }
-  return out;
-}
-
-std::vector<core::SolidLoads> fluid_loads(const fluid::PressureSolver& pressure,
-                                          const grid::CellField& p, const dem::DemSolver& dem) {
-  // J p + F_q from the rows a_{s,c} the pressure matrix was assembled from (fluid module)
-  const auto all = pressure.solid_loads(p);
-  std::vector<core::SolidLoads> out;
-  for (const auto& st : dem.owned()) {
-    const auto it =
-        std::lower_bound(all.begin(), all.end(), st.id,
-                         [](const core::SolidLoads& l, std::int64_t id) { return l.id < id; });
-    out.push_back(it != all.end() && it->id == st.id ? *it
-                                                     : core::SolidLoads{st.id, {0.0, 0.0}, 0.0});
-  }
-  return out;
 }
 
 std::vector<dem::Contact> all_contacts(const dem::DemSolver& dem, const core::Comm& comm) {

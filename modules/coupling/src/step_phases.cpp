@@ -200,8 +200,8 @@ fluid::SolveStats solve_pressure(const Layout& L, const StepSettings& set,
   std::vector<fluid::SolidCoupling> couplings;
   if (set.has_solids) {  // collective: on every rank of a run with solids
     core::ScopedTimer timer("geometry");
-    couplings = solid_couplings(solids.scene, solids.cut, f.cells, L.d, collision, set.quadrature,
-                                dt, L.comm);
+    couplings = fluid::solid_couplings(solids.scene.states, solids.cut, f.cells, L.d, collision,
+                                       set.quadrature, dt);
   }
   core::ScopedTimer timer("pressure");
   return solver.solve(f.cells, f.apertures, f.u, f.w, couplings, dt, set.fluid, f.p,
@@ -215,14 +215,14 @@ void project(const Layout& L, const StepSettings& set, double dt, fluid::FluidSt
   fluid::enforce_walls(f.u, f.w, set.fluid, L.d);
 }
 
-// F_fluid = J p^{n+1} from the rows of the pressure solve plus the step's viscous loads, then K
-// DEM subcycles with it fixed.
+// F_fluid = J p^{n+1} + F_q from the rows of the pressure solve plus the step's viscous loads,
+// then K DEM subcycles with it fixed (the DEM takes the loads of the solids it owns).
 std::vector<core::SolidLoads> advance_solids(const fluid::PressureSolver* pressure,
                                              const fluid::FluidState* fluid, double dt,
                                              const ViscousExchange& viscous, dem::DemSolver& dem) {
   core::ScopedTimer timer("solids");
   std::vector<core::SolidLoads> loads;
-  if (pressure && fluid) loads = fluid_loads(*pressure, fluid->p, dem);
+  if (pressure && fluid) loads = pressure->solid_loads(fluid->p);
   dem.advance(dt, viscous.solids.empty() ? loads : plus_viscous(loads, viscous, dem));
   return loads;
 }

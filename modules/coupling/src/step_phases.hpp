@@ -9,6 +9,7 @@
 #include "picdem/coupling/simulation.hpp"
 #include "picdem/coupling/solids_in_fluid.hpp"
 #include "picdem/dem/dem_solver.hpp"
+#include "picdem/fluid/body_loads.hpp"
 #include "picdem/fluid/fluid.hpp"
 #include "picdem/fluid/fluid_state.hpp"
 #include "picdem/fluid/pressure_solver.hpp"
@@ -41,7 +42,7 @@ struct StepSettings {
   double tiny_fraction = 0;         ///< coupling/tiny_cell_fraction
   double beta = 1.0;                ///< coupling/beta, eq. 20
   bool viscous_rigid_rows = false;  ///< coupling/viscous_rigid_rows (doc/viscous.md)
-  QuadratureOptions quadrature;
+  fluid::QuadratureOptions quadrature;
   double density_relaxation = 0.0;                    ///< free_surface/density_correction
   long long density_interval = 1;                     ///< free_surface/density_correction_interval
   double particle_mass = 0.0;                         ///< per unit depth
@@ -124,9 +125,10 @@ fluid::SolveStats solve_pressure(const Layout& L, const StepSettings& set,
 /// project: u^{n+1} = u~ - dt/rho grad p on open faces.
 void project(const Layout& L, const StepSettings& set, double dt, fluid::FluidState& fluid);
 
-/// solids: F_fluid = J p^{n+1} from the last solve of `pressure` (none in a dry run: pressure =
-/// fluid = nullptr) plus the viscous loads of the step, then the DEM subcycles (eqs. 21-25).
-/// Returns the pressure loads used.
+/// solids: F_fluid = J p^{n+1} + F_q from the rows of the last solve of `pressure`
+/// (PressureSolver::solid_loads; none in a dry run: pressure = fluid = nullptr) plus the viscous
+/// loads of the step, then the DEM subcycles (eqs. 21-25). Returns the pressure loads used:
+/// every solid with rows, by id, the same on every rank.
 std::vector<core::SolidLoads> advance_solids(const fluid::PressureSolver* pressure,
                                              const fluid::FluidState* fluid, double dt,
                                              const ViscousExchange& viscous, dem::DemSolver& dem);

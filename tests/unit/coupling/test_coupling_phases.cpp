@@ -9,6 +9,7 @@
 
 #include "picdem/coupling/solids_in_fluid.hpp"
 #include "picdem/dem/parameters.hpp"
+#include "picdem/fluid/body_loads.hpp"
 #include "picdem/geometry/circle.hpp"
 #include "picdem/geometry/polygon.hpp"
 
@@ -60,9 +61,9 @@ TEST(SolidCouplings, RowsQuadratureLoadAndPredictedVelocityOfARectangle) {
   fluid::CellStates cells(d, grid::Stagger::Cell, kFluid);
   cells(3, 4) = kAir;
   const std::vector<core::SolidLoads> collision = {{7, {3.0, -4.0}, 0.02}};
-  const coupling::QuadratureOptions q{true, 1000.0, {0.0, -9.81}};
+  const fluid::QuadratureOptions q{true, 1000.0, {0.0, -9.81}};
   const double dt = 1e-3;
-  const auto out = coupling::solid_couplings(scene, cut, cells, d, collision, q, dt, self);
+  const auto out = fluid::solid_couplings(scene.states, cut, cells, d, collision, q, dt);
   ASSERT_EQ(out.size(), 1u);
   const auto& c = out[0];
   EXPECT_EQ(c.id, 7);
@@ -97,9 +98,8 @@ TEST(SolidCouplings, RowsQuadratureLoadAndPredictedVelocityOfARectangle) {
   EXPECT_NEAR(c.v_star[2], 0.5 + dt * (0.02 - 0.8175) / 0.1, 1e-13);
 
   // Without the quadrature: no load, V* from gravity and the collision only.
-  const coupling::QuadratureOptions one_point{false, 1000.0, {0.0, -9.81}};
-  const auto plain =
-      coupling::solid_couplings(scene, cut, cells, d, collision, one_point, dt, self);
+  const fluid::QuadratureOptions one_point{false, 1000.0, {0.0, -9.81}};
+  const auto plain = fluid::solid_couplings(scene.states, cut, cells, d, collision, one_point, dt);
   ASSERT_EQ(plain.size(), 1u);
   EXPECT_EQ(plain[0].load[0], 0.0);
   EXPECT_EQ(plain[0].load[2], 0.0);

@@ -13,6 +13,7 @@
 #include <memory>
 
 #include "picdem/coupling/solids_in_fluid.hpp"
+#include "picdem/fluid/body_loads.hpp"
 #include "picdem/geometry/circle.hpp"
 #include "picdem/geometry/polygon.hpp"
 
@@ -77,10 +78,10 @@ TEST(SolidLoads, LinearPressureFieldOnDiskAndPolygonIsTheExactIntegral) {
       p(i, k) = p0 + a * x.x + b * x.z;
     }
   // The quadrature carries p along grad p = rho g: rho = 1, g = (a, b).
-  const coupling::QuadratureOptions full{true, 1.0, {a, b}}, one_point{false, 1.0, {a, b}};
-  const auto rows = coupling::solid_couplings(scene, cut, cells, d, {}, full, 1e-3, comm);
+  const fluid::QuadratureOptions full{true, 1.0, {a, b}}, one_point{false, 1.0, {a, b}};
+  const auto rows = fluid::solid_couplings(scene.states, cut, cells, d, {}, full, 1e-3);
   const auto loads = fluid::pressure_loads(rows, p, cells, d);
-  const auto rows1 = coupling::solid_couplings(scene, cut, cells, d, {}, one_point, 1e-3, comm);
+  const auto rows1 = fluid::solid_couplings(scene.states, cut, cells, d, {}, one_point, 1e-3);
   const auto loads1 = fluid::pressure_loads(rows1, p, cells, d);
   ASSERT_EQ(loads.size(), 2u);
   ASSERT_EQ(loads1.size(), 2u);
@@ -108,7 +109,7 @@ TEST(SolidLoads, LinearPressureFieldOnDiskAndPolygonIsTheExactIntegral) {
   dropped = comm.sum(dropped);
   EXPECT_GT(dropped, 0);
   const auto loads_tiny = fluid::pressure_loads(
-      coupling::solid_couplings(scene, cut_tiny, cells, d, {}, full, 1e-3, comm), p, cells, d);
+      fluid::solid_couplings(scene.states, cut_tiny, cells, d, {}, full, 1e-3), p, cells, d);
   for (std::size_t n = 0; n < 2; ++n) {
     const Vec2 exact = -bodies[n].area * Vec2{a, b};
     const double bound = std::hypot(a, b) * static_cast<double>(dropped) * 1e-3 * s.h * s.h;
