@@ -32,9 +32,10 @@ class CouplingTerm {
                                               const grid::Decomposition& d) const = 0;
 };
 
-/// Rigid bodies coupled through their cut cells (paper eqs. 5-6, METHOD.md option (a)): the dense
-/// block dt A_s M_s^-1 A_s^T of each solid over its fluid cut cells, b += A_s V*_s, and the loads
-/// J_s p + F_s from the same rows a_{s,c}.
+/// Rigid bodies coupled through their cut cells (paper eqs. 5-6): the dense block
+/// dt A_s M_s^-1 A_s^T of each solid over its fluid cut cells into the matrix (METHOD.md option
+/// (a)), or with rows.low_rank set on entry U = [A_s], W = dt M_s^-1 and only the blocks' diagonal
+/// into the matrix (option (b)); b += A_s V*_s, and the loads J_s p + F_s from the same rows.
 class RigidBodyTerm final : public CouplingTerm {
  public:
   void add(const std::vector<SolidCoupling>& couplings, double dt, const CellStates& cells,

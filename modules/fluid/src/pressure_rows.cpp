@@ -22,7 +22,9 @@ void fluid_rows(const CellStates& cells, const Apertures& E, const grid::FaceFie
   const grid::GridSpec& g = d.spec();
   const core::IndexBox own = d.owned_cells();
   rows.cells.clear(), rows.row.clear(), rows.col.clear(), rows.val.clear(), rows.rhs.clear();
-  rows.with_solids = false;
+  rows.with_solids = rows.low_rank = false;
+  rows.u_row.clear(), rows.u_col.clear(), rows.u_val.clear(), rows.weight.clear();
+  rows.u_diag.clear();
   row_of.fill(-1);
   for (int k = own.k0; k < own.k1; ++k)
     for (int i = own.i0; i < own.i1; ++i)

@@ -19,8 +19,16 @@ struct RowContributions {
   std::vector<double> val;       ///< per contribution: its value
   std::vector<double> rhs;       ///< per row
   bool with_solids = false;      ///< solid couplings entered (solver/MueLu_solids applies)
+  // The solids' term kept out of the matrix (solver/coupling_operator low_rank): U W U^T with U's
+  // entries (row, unknown j = 3 x the solid's index + component, value a_{s,c} component), W the
+  // diagonal dt M_s^-1 (3 per solid, the same on every rank); the contributions above then hold
+  // its diagonal only, also kept per row in u_diag (the operator subtracts it again).
+  bool low_rank = false;
+  std::vector<int> u_row, u_col;
+  std::vector<double> u_val, weight, u_diag;
 
   void add(int r, long long c, double v) { row.push_back(r), col.push_back(c), val.push_back(v); }
+  void add_u(int r, int j, double v) { u_row.push_back(r), u_col.push_back(j), u_val.push_back(v); }
 };
 
 /// -L_E and b = -D(u~) (+ source) of the owned fluid cells into `rows` (cleared first): per row

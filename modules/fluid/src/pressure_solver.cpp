@@ -46,6 +46,8 @@ struct SolverSettings {
   double tolerance = 1e-8;  // solver/tolerance, or solver/density_tolerance
   int max_iterations = 500;
   bool rebalance = true;
+  bool low_rank = false;  // solver/coupling_operator: low_rank
+  bool density = false;   // the density correction's solve (its own timers)
   Teuchos::ParameterList belos, muelu, muelu_solids, muelu_one_level;
 };
 
@@ -125,6 +127,8 @@ SolverSettings settings_from(const core::Params& params,
   s.tolerance = params.real(density ? "solver/density_tolerance" : "solver/tolerance");
   s.max_iterations = static_cast<int>(params.integer("solver/max_iterations"));
   s.rebalance = params.boolean("solver/rebalance");
+  s.density = density;
+  s.low_rank = params.string("solver/coupling_operator") == "low_rank";
   s.belos = params.teuchos("solver/Belos");
   s.muelu = params.teuchos("solver/MueLu");
   s.muelu_solids = params.teuchos("solver/MueLu_solids");
@@ -148,14 +152,16 @@ struct Interpreters {
 };
 
 /// MueLu's hierarchy for the system's matrix: the list for this system (muelu_list) with the
-/// cell-centre coordinates on level 0, set up by the kept interpreter of that list.
+/// cell-centre coordinates on level 0, set up by the kept interpreter of that list. With the
+/// solids' term kept out of the matrix, the matrix has no dense blocks: solver/MueLu alone.
 RCP<OP> preconditioner(const detail::TpetraSystem& ts, const SolverSettings& settings,
                        bool with_solids, long long unknowns, int ranks, Interpreters& kept) {
   using SC = double;
   using LO = OP::local_ordinal_type;
   using GO = OP::global_ordinal_type;
   using NO = OP::node_type;
-  core::ScopedTimer timer("fluid: pressure preconditioner");
+  core::ScopedTimer timer(settings.density ? "fluid: density preconditioner"
+                                           : "fluid: pressure preconditioner");
   bool one_level = false;
   Teuchos::ParameterList muelu = muelu_list(settings, with_solids, unknowns, ranks, &one_level);
   RCP<Interpreters::Manager>& made = kept.made[(with_solids ? 2 : 0) + (one_level ? 1 : 0)];
@@ -185,8 +191,8 @@ RCP<OP> preconditioner(const detail::TpetraSystem& ts, const SolverSettings& set
 /// above the tolerance. Adds the iterations and sets the true residual in `stats`.
 void run_cg(const detail::TpetraSystem& ts, const RCP<OP>& prec, const SolverSettings& settings,
             double b_norm, SolveStats& stats) {
-  core::ScopedTimer timer("fluid: pressure solve");
-  const auto& A = ts.matrix();
+  core::ScopedTimer timer(settings.density ? "fluid: density solve" : "fluid: pressure solve");
+  const auto& A = ts.op();
   auto true_residual = [&]() {
     MV R(A->getRangeMap(), 1);
     A->apply(*ts.x(), R);
@@ -234,8 +240,11 @@ SolveStats solve_rows(detail::TpetraSystem& ts, const grid::Decomposition& d,
     return stats;
   }
   stats.reused_structure = ts.load(rows, x, d, settings.rebalance);
+  const bool blocks = rows.with_solids && !rows.low_rank;  // dense blocks in the matrix
   const RCP<OP> prec =
-      preconditioner(ts, settings, rows.with_solids, stats.unknowns, comm.size(), interpreters);
+      preconditioner(ts, settings, blocks, stats.unknowns, comm.size(), interpreters);
+  stats.matrix_entries = ts.matrix_entries();
+  stats.low_rank_entries = ts.low_rank_entries();
   stats.setup_seconds = seconds_since(t0);
   const auto t1 = std::chrono::steady_clock::now();
   run_cg(ts, prec, settings, b_norm, stats);
@@ -273,13 +282,15 @@ struct PressureSolver::Impl {
         settings(settings_from(params, eq)),
         row_of(dec, grid::Stagger::Cell, -1) {}
 
-  /// The fluid rows (-L_E, -D + source), then the coupling term's part.
+  /// The fluid rows (-L_E, -D + source), then the coupling term's part, in the matrix or
+  /// (low_rank) beside it.
   void assemble(const CellStates& cells, const Apertures& E, const grid::FaceField& u,
                 const grid::FaceField& w, const std::vector<SolidCoupling>& couplings, double dt,
                 const FluidConfig& cfg, const SurfaceFractions* surface,
-                const grid::CellField* source) {
+                const grid::CellField* source, bool low_rank) {
     core::ScopedTimer timer("fluid: pressure assembly");
     detail::fluid_rows(cells, E, u, w, dt, cfg, surface, source, d, rows, row_of);
+    rows.low_rank = low_rank;
     term->add(couplings, dt, cells, row_of, d, rows);
   }
 };
@@ -294,7 +305,7 @@ AssembledSystem PressureSolver::assemble(const CellStates& cells, const Aperture
                                          const std::vector<SolidCoupling>& couplings, double dt,
                                          const FluidConfig& cfg, const SurfaceFractions* surface,
                                          const grid::CellField* source) const {
-  impl_->assemble(cells, E, u, w, couplings, dt, cfg, surface, source);
+  impl_->assemble(cells, E, u, w, couplings, dt, cfg, surface, source, false);
   return detail::assembled(impl_->rows);
 }
 
@@ -304,7 +315,7 @@ SolveStats PressureSolver::solve(const CellStates& cells, const Apertures& E,
                                  const FluidConfig& cfg, grid::CellField& p,
                                  const SurfaceFractions* surface, const grid::CellField* source) {
   const auto t0 = std::chrono::steady_clock::now();
-  impl_->assemble(cells, E, u, w, couplings, dt, cfg, surface, source);
+  impl_->assemble(cells, E, u, w, couplings, dt, cfg, surface, source, impl_->settings.low_rank);
   const double assembly = seconds_since(t0);
   const auto& rows = impl_->rows;
   const grid::GridSpec& g = impl_->d.spec();
@@ -321,6 +332,12 @@ SolveStats PressureSolver::solve(const CellStates& cells, const Apertures& E,
     p(static_cast<int>(rows.cells[r] % g.nx), static_cast<int>(rows.cells[r] / g.nx)) = x[r];
   impl_->halo.forward(p);
   return stats;
+}
+
+std::vector<double> PressureSolver::apply(const std::vector<double>& x) const {
+  if (impl_->system.op().is_null())
+    throw core::SolverError("PressureSolver::apply needs a solve() first");
+  return impl_->system.apply(x);
 }
 
 std::vector<core::SolidLoads> PressureSolver::solid_loads(const grid::CellField& p) const {

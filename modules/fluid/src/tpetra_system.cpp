@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <numeric>
 #include <string>
+#include <utility>
 
 #include "picdem/core/error.hpp"
 #include "picdem/core/timer.hpp"
@@ -14,6 +15,46 @@ namespace picdem::fluid::detail {
 
 using Teuchos::RCP;
 using Teuchos::rcp;
+
+namespace {
+
+using MV = Tpetra::MultiVector<>;
+using Vec = Tpetra::Vector<>;
+
+/// The pressure operator with the solids' blocks kept as a low-rank term (METHOD.md option (b)):
+/// y = alpha (A + U W U^T - D) x + beta y, where A (MueLu's matrix) holds the fluid rows and
+/// D = diag(U W U^T), which the operator takes out again. Symmetric, like the assembled matrix.
+class LowRankOperator final : public Tpetra::Operator<> {
+ public:
+  LowRankOperator(RCP<const TpetraSystem::Matrix> A, RCP<const TpetraSystem::Matrix> U,
+                  RCP<const Vec> w, RCP<const Vec> diag)
+      : A_(std::move(A)), U_(std::move(U)), w_(std::move(w)), diag_(std::move(diag)) {}
+  RCP<const TpetraSystem::Map> getDomainMap() const override { return A_->getDomainMap(); }
+  RCP<const TpetraSystem::Map> getRangeMap() const override { return A_->getRangeMap(); }
+  void apply(const MV& X, MV& Y, Teuchos::ETransp /*symmetric*/, double alpha,
+             double beta) const override {
+    const std::size_t nv = X.getNumVectors();
+    if (z_.is_null() || z_->getNumVectors() != nv) {
+      z_ = rcp(new MV(U_->getDomainMap(), nv)), wz_ = rcp(new MV(U_->getDomainMap(), nv));
+      t_ = rcp(new MV(A_->getRangeMap(), nv));
+    }
+    // z = U^T x (the 3 per solid sums a_{s,c} . x over the cut cells), then W z = dt M^-1 z
+    U_->apply(X, *z_, Teuchos::TRANS);
+    wz_->elementWiseMultiply(1.0, *w_, *z_, 0.0);
+    // t = A x + U (W U^T x) - D x
+    A_->apply(X, *t_);
+    U_->apply(*wz_, *t_, Teuchos::NO_TRANS, 1.0, 1.0);
+    t_->elementWiseMultiply(-1.0, *diag_, X, 1.0);
+    Y.update(alpha, *t_, beta);
+  }
+
+ private:
+  RCP<const TpetraSystem::Matrix> A_, U_;
+  RCP<const Vec> w_, diag_;
+  mutable RCP<MV> z_, wz_, t_;
+};
+
+}  // namespace
 
 bool TpetraSystem::load(const RowContributions& rows, const std::vector<double>& x0,
                         const grid::Decomposition& d, bool rebalance) {
@@ -24,7 +65,77 @@ bool TpetraSystem::load(const RowContributions& rows, const std::vector<double>&
     fill_values(rows);
     fill_vectors(rows, x0);
   }
+  if (rows.low_rank)
+    build_low_rank(rows);
+  else
+    U_ = Teuchos::null, op_ = A_;
   return reuse;
+}
+
+/// U from its entries on the assembly rows (columns: the 3 per solid unknowns, split evenly over
+/// the ranks), moved to the solve rows with the rows' Export; W and diag(U W U^T) likewise.
+void TpetraSystem::build_low_rank(const RowContributions& rows) {
+  core::ScopedTimer timer("fluid: pressure low-rank term");
+  const auto n_asm = static_cast<std::size_t>(asm_map_->getNodeNumElements());
+  RCP<const Map> solid_map =
+      rcp(new Map(static_cast<Tpetra::global_size_t>(rows.weight.size()), 0, tcomm_));
+  std::vector<std::size_t> count(n_asm, 0);
+  for (int r : rows.u_row) ++count[static_cast<std::size_t>(r)];
+  RCP<Matrix> U_asm =
+      rcp(new Matrix(asm_map_, Teuchos::ArrayView<const std::size_t>(count.data(), n_asm)));
+  for (std::size_t e = 0; e < rows.u_row.size(); ++e) {
+    const GO row = offset_ + rows.u_row[e], col = rows.u_col[e];
+    U_asm->insertGlobalValues(row, Teuchos::ArrayView<const GO>(&col, 1),
+                              Teuchos::ArrayView<const double>(&rows.u_val[e], 1));
+  }
+  U_asm->fillComplete(solid_map, asm_map_);
+  RCP<Vec> w = rcp(new Vec(solid_map));
+  {
+    auto v = w->getDataNonConst();
+    for (LO l = 0; l < static_cast<LO>(v.size()); ++l)
+      v[l] = rows.weight[static_cast<std::size_t>(solid_map->getGlobalElement(l))];
+  }
+  RCP<Vec> diag_asm = rcp(new Vec(asm_map_)), diag = diag_asm;
+  {
+    auto v = diag_asm->getDataNonConst();
+    for (std::size_t r = 0; r < n_asm; ++r) v[r] = rows.u_diag[r];
+  }
+  U_ = U_asm;
+  if (!export_.is_null()) {
+    U_ = Tpetra::exportAndFillCompleteCrsMatrix<Matrix>(RCP<const Matrix>(U_asm), *export_,
+                                                        solid_map, solve_map_);
+    diag = rcp(new Vec(solve_map_));
+    diag->doExport(*diag_asm, *export_, Tpetra::INSERT);
+  }
+  op_ = rcp(new LowRankOperator(A_, U_, w, diag));
+}
+
+std::vector<double> TpetraSystem::apply(const std::vector<double>& x) const {
+  const bool moved = !export_.is_null();
+  MV x_asm(asm_map_, 1), y_asm(asm_map_, 1), xs(solve_map_, 1), ys(solve_map_, 1);
+  {
+    auto v = x_asm.getDataNonConst(0);
+    for (std::size_t r = 0; r < x.size(); ++r) v[r] = x[r];
+  }
+  if (moved)
+    xs.doExport(x_asm, *export_, Tpetra::INSERT);
+  else
+    xs.assign(x_asm);
+  op_->apply(xs, ys);
+  if (moved)
+    y_asm.doImport(ys, *export_, Tpetra::INSERT);
+  else
+    y_asm.assign(ys);
+  const auto v = y_asm.getData(0);
+  return std::vector<double>(v.begin(), v.end());
+}
+
+long long TpetraSystem::matrix_entries() const {
+  return static_cast<long long>(A_->getGlobalNumEntries());
+}
+
+long long TpetraSystem::low_rank_entries() const {
+  return U_.is_null() ? 0 : static_cast<long long>(U_->getGlobalNumEntries());
 }
 
 bool TpetraSystem::same_structure(const RowContributions& rows, const core::Comm& comm,

@@ -12,11 +12,17 @@
 // way. Maps, graphs, Exports, the CSR slot of every contribution and the vectors are kept while
 // the structure (rows and the columns of every contribution, on every rank) is unchanged: a
 // solve then only refills values.
+//
+// With the solids' term kept out of the matrix (RowContributions::low_rank), A holds the fluid
+// rows plus the diagonal of the solids' blocks, and op() is A + U W U^T - diag(U W U^T): U (rows
+// x 3 per solid, the rows a_{s,c}) is built at every load on the assembly rows and exported to
+// the solve rows; the 3 per solid unknowns of U^T x are split evenly over the ranks.
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Export.hpp>
 #include <Tpetra_Map.hpp>
 #include <Tpetra_MultiVector.hpp>
+#include <Tpetra_Operator.hpp>
 #include <Tpetra_Vector.hpp>
 
 #include <vector>
@@ -41,7 +47,16 @@ class TpetraSystem {
   bool load(const RowContributions& rows, const std::vector<double>& x0,
             const grid::Decomposition& d, bool rebalance);
 
+  /// The matrix MueLu is built on: the whole operator, or with the low-rank term the fluid
+  /// rows and the diagonal of the solids' blocks.
   const Teuchos::RCP<Matrix>& matrix() const { return A_; }
+  /// The operator CG solves with: matrix(), or matrix() + U W U^T - diag(U W U^T).
+  const Teuchos::RCP<const Tpetra::Operator<>>& op() const { return op_; }
+  /// op() applied to x (one value per row of the last load, this rank's rows). Collective.
+  std::vector<double> apply(const std::vector<double>& x) const;
+  /// Global entries of matrix() and of U (0 without the low-rank term).
+  long long matrix_entries() const;
+  long long low_rank_entries() const;
   const Teuchos::RCP<MV>& x() const { return X_; }
   const Teuchos::RCP<MV>& b() const { return B_; }
   const Teuchos::RCP<MV>& coordinates() const { return coords_; }
@@ -58,6 +73,7 @@ class TpetraSystem {
                         long long lo, long long hi);
   void fill_values(const RowContributions& rows);
   void fill_vectors(const RowContributions& rows, const std::vector<double>& x0);
+  void build_low_rank(const RowContributions& rows);
 
   bool built_ = false, rebalance_ = false;
   std::vector<long long> key_cells_, key_col_;  // the structure of the last rebuild
@@ -80,6 +96,9 @@ class TpetraSystem {
   std::vector<std::size_t> a_from_;
   std::vector<double> a_values_;
   Teuchos::RCP<MV> X_, B_, coords_, X_asm_, B_asm_;
+  // The low-rank term: U on the solve rows, and the operator Belos applies.
+  Teuchos::RCP<Matrix> U_;
+  Teuchos::RCP<const Tpetra::Operator<>> op_;
 };
 
 }  // namespace picdem::fluid::detail

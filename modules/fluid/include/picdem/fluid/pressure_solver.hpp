@@ -9,8 +9,10 @@
 // Unknowns are the owned fluid cells, numbered by their global cell id k nx + i. The matrix is a
 // Tpetra::CrsMatrix whose structure (maps, graph, Export) is kept while the fluid mask and the
 // couplings' cells are unchanged (values refilled); the solids' term is a separate piece
-// (src/coupling_term.hpp). Belos CG preconditioned by MueLu (a new hierarchy every solve) solves
-// it starting from the previous pressure. Tpetra, Belos and MueLu stay inside src/.
+// (src/coupling_term.hpp), assembled into the matrix (solver/coupling_operator: assembled) or
+// applied beside it as dt U M^-1 U^T with MueLu built on the fluid rows (low_rank). Belos CG
+// preconditioned by MueLu (a new hierarchy every solve) solves it starting from the previous
+// pressure. Tpetra, Belos and MueLu stay inside src/.
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -45,6 +47,8 @@ struct SolveStats {
   double solve_seconds = 0.0;      ///< Belos iterations
   long long unknowns = 0;          ///< global number of fluid cells
   bool reused_structure = false;   ///< the Tpetra structure of the last solve was reused
+  long long matrix_entries = 0;    ///< global entries of the matrix MueLu was built on
+  long long low_rank_entries = 0;  ///< global entries of U (solver/coupling_operator low_rank)
 };
 
 /// The assembled system in plain arrays (for tests and diagnostics): rows are this rank's owned
@@ -83,12 +87,18 @@ class PressureSolver {
                    const SurfaceFractions* surface = nullptr,
                    const grid::CellField* source = nullptr);
 
-  /// The same assembly as solve(), returned as plain arrays instead of solved.
+  /// The same assembly as solve(), returned as plain arrays instead of solved; the solids'
+  /// blocks are in the matrix whatever solver/coupling_operator says.
   AssembledSystem assemble(const CellStates& cells, const Apertures& E, const grid::FaceField& u,
                            const grid::FaceField& w, const std::vector<SolidCoupling>& couplings,
                            double dt, const FluidConfig& cfg,
                            const SurfaceFractions* surface = nullptr,
                            const grid::CellField* source = nullptr) const;
+
+  /// The operator of the last solve() applied to x (one value per row of that system, in the
+  /// order of AssembledSystem::rows): the assembled matrix, or with solver/coupling_operator
+  /// low_rank the fluid rows plus the solids' low-rank term (for tests). Collective.
+  std::vector<double> apply(const std::vector<double>& x) const;
 
   /// The loads J_s p + F_s on every solid of the couplings of the last solve() or assemble(),
   /// from the same rows a_{s,c} the matrix was assembled from (eq. 6; F_s: SolidCoupling::load);
