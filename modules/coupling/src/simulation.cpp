@@ -22,6 +22,7 @@
 #include "picdem/geometry/obstacles.hpp"
 #include "picdem/grid/field.hpp"
 #include "picdem/particles/particles.hpp"
+#include "picdem/particles/water.hpp"
 
 namespace picdem::coupling {
 
@@ -29,47 +30,6 @@ using core::Vec2;
 using grid::CellState;
 using grid::FaceField;
 using grid::Stagger;
-
-namespace {
-
-/// A water region of the case: a box, or everything below a level (box false, z1 the level).
-struct WaterRegion {
-  bool box = false;
-  double x0 = 0, x1 = 0, z0 = 0, z1 = 0;
-};
-
-/// The case's water regions, read once: seeding tests every candidate point against them (five
-/// per cell), and looking them up in the parameter list for each point cost more than the first
-/// ten steps of the 6-layer case (doc/performance.md).
-std::vector<WaterRegion> water_regions(const core::Params& params) {
-  std::vector<WaterRegion> out;
-  for (const auto& name : params.sublist_names("water")) {
-    const auto w = params.sub("water/" + name);
-    WaterRegion r;
-    r.box = w.string("type") == "box";
-    if (r.box) {
-      const auto x = w.reals("x"), z = w.reals("z");
-      r.x0 = x[0], r.x1 = x[1], r.z0 = z[0], r.z1 = z[1];
-    } else {
-      r.z1 = w.real("z");
-    }
-    out.push_back(r);
-  }
-  return out;
-}
-
-bool inside_water(const std::vector<WaterRegion>& water, const Vec2& c) {
-  for (const auto& w : water) {
-    if (w.box) {
-      if (c.x >= w.x0 && c.x <= w.x1 && c.z >= w.z0 && c.z <= w.z1) return true;
-    } else if (c.z <= w.z1) {
-      return true;
-    }
-  }
-  return false;
-}
-
-}  // namespace
 
 // The modules and the run's records; the step's phases (step_phases.hpp) get what each needs.
 struct Simulation::Impl {
@@ -105,19 +65,18 @@ namespace {
 // particles that fall inside a body are then removed, so that cut cells whose centre is covered
 // still get particles in their fluid part.
 particles::ParticleSet seed_water(const Simulation::Impl& m) {
-  const std::vector<WaterRegion> water = water_regions(m.params);
+  const particles::WaterRegions water(m.params);
   const SolidScene scene0 = scene_of(m.dem.get(), m.obstacles);
   const SolidLocator locator(scene0);
   auto ps = particles::seed(*m.decomp, m.set.particles, [&](Vec2 c) {
     const double r = 0.5 * m.set.spec.h;
-    return inside_water(water, c) || inside_water(water, c + Vec2{r, r}) ||
-           inside_water(water, c + Vec2{-r, r}) || inside_water(water, c + Vec2{r, -r}) ||
-           inside_water(water, c + Vec2{-r, -r});
+    return water.contains(c) || water.contains(c + Vec2{r, r}) || water.contains(c + Vec2{-r, r}) ||
+           water.contains(c + Vec2{r, -r}) || water.contains(c + Vec2{-r, -r});
   });
   std::vector<char> keep(ps.size());
   for (std::size_t n = 0; n < keep.size(); ++n) {
     const Vec2 p{ps.x[n], ps.z[n]};
-    keep[n] = inside_water(water, p) && !locator.inside(p);
+    keep[n] = water.contains(p) && !locator.inside(p);
   }
   ps.keep_if(keep);
   return ps;

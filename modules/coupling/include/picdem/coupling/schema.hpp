@@ -1,12 +1,11 @@
 #pragma once
-// The one parameter schema of a picdem case: every module's declarations plus the run's own
-// (time, output, initial water).
+// The one parameter schema of a picdem case, assembled from the modules' declarations (each
+// declares its own keys: grid, fluid with free_surface, particles with the water, geometry's
+// obstacles, dem's solids, io's output and checkpoint keys) plus the step's own (case/name,
+// time, coupling) and the checks across modules.
 #include "picdem/core/params.hpp"
 
 namespace picdem::coupling {
-
-/// time/*, output/*, the `water` family and the cross-checks that need several modules' keys.
-void declare_parameters(core::ParamSchema& schema);
 
 /// Everything a case file may hold.
 core::ParamSchema case_schema();

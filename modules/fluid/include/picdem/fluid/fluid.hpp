@@ -26,6 +26,9 @@ namespace picdem::fluid {
 /// fluid/wall_right, fluid/wall_bottom, fluid/wall_top, fluid/viscosity_scheme and the solver/
 /// keys.
 void declare_parameters(core::ParamSchema& schema);
+/// Declares free_surface/method, free_surface/theta_min, free_surface/density_correction and
+/// free_surface/density_correction_interval (src/parameters.cpp).
+void declare_free_surface_parameters(core::ParamSchema& schema);
 
 /// The four tank walls, in the order of FluidConfig::wall_no_slip.
 enum class TankWall { Left = 0, Right = 1, Bottom = 2, Top = 3 };
