@@ -1,6 +1,7 @@
 #include "picdem/coupling/simulation.hpp"
 
 #include "body_forces.hpp"
+#include "picdem/fluid/open_flow.hpp"
 #include "rebalance.hpp"
 #include "step_phases.hpp"
 #include "viscous_bodies.hpp"
@@ -155,6 +156,7 @@ Simulation::Simulation(core::Comm comm, core::Params params) : m_(std::make_uniq
     m.fluid = fluid::FluidState(d);
     m.particles = seed_water(m);
     rebalance_cuts(m);
+    if (m.set.fluid.open.any()) m.diag.open_volumes = {0.0, 0.0};  // in, out since t = 0
   }
 }
 
@@ -227,7 +229,9 @@ void Simulation::step() {
   fluid::FluidState* fluid = set.has_fluid ? &m.fluid : nullptr;
   const double speed = cfl_extra_speed(set, m.particles, m.dem.get(), m.comm);
   const double dt = choose_time_step(set, m.t, m.step, fluid, speed, m.comm);  // time step
-  SolidsAtStart solids;                                                        // at X^n
+  m.set.fluid.open.t0 = m.t, m.set.fluid.open.t1 = m.t + dt;  // the inflows over this step
+  fluid::OpenFluxes open_flux;
+  SolidsAtStart solids;  // at X^n
   fluid::SolveStats solve;
   if (fluid) {
     solids = place_solids(L, set, m.dem.get(), m.obstacles, m.fluid.apertures);  // geometry
@@ -242,6 +246,8 @@ void Simulation::step() {
     if (m.dem && !m.viscous.solids.empty()) collision = plus_viscous(collision, m.viscous, *m.dem);
     solve = solve_pressure(L, set, solids, collision, dt, *m.pressure, m.fluid);  // pressure
     project(L, set, dt, m.fluid);                                                 // project
+    if (set.fluid.open.any())  // volumes through the open sides (doc/open_boundaries.md)
+      open_flux = fluid::open_fluxes(m.fluid.u, m.fluid.w, set.fluid.open, L.d, m.comm);
     if (!m.obstacles.empty())                                                     // for forces.csv
       m.obstacle_loads = fluid::obstacle_pressure_loads(solids.cut, m.fluid.cells, L.d, m.fluid.p,
                                                         set.quadrature, m.obstacles.size());
@@ -254,8 +260,12 @@ void Simulation::step() {
   }
   m.t += dt;
   ++m.step;
+  std::vector<double> volumes = m.diag.open_volumes;
+  if (volumes.size() == 2)
+    volumes[0] += dt * open_flux.inflow, volumes[1] += dt * open_flux.outflow;
   m.diag = record_diagnostics(L, set, m.t, m.step, dt, solve, m.particles, m.dem.get(),
                               fluid ? &solids : nullptr, m.occupancy, fluid);
+  m.diag.open_volumes = volumes;
 }
 
 const fluid::FluidState& Simulation::fluid() const {

@@ -6,10 +6,12 @@
 #include <limits>
 #include <sstream>
 
+#include "open_particles.hpp"
 #include "picdem/core/error.hpp"
 #include "picdem/core/timer.hpp"
 #include "picdem/fluid/bodies.hpp"
 #include "picdem/fluid/free_surface.hpp"
+#include "picdem/fluid/open_flow.hpp"
 #include "picdem/fluid/viscous.hpp"
 #include "picdem/particles/occupancy.hpp"
 #include "picdem/particles/particles.hpp"
@@ -102,6 +104,7 @@ SolidsAtStart place_solids(const Layout& L, const StepSettings& set, const dem::
   SolidsAtStart out;
   out.scene = scene_of(dem, obstacles);
   if (set.has_bodies) out.cut = cut_cells(out.scene, L.d, set.tiny_fraction, apertures);
+  if (set.fluid.open.any()) fluid::open_side_apertures(apertures, set.fluid.open, L.d);
   return out;
 }
 
@@ -132,6 +135,9 @@ void mark_cells(const Layout& L, const StepSettings& set, const geometry::CutCel
   occ.current = false;  // the particles move before the next use
   fluid::mark_cells(occ.count, set.has_bodies ? &cut : nullptr, L.d, L.halo, set.ghost_fluid,
                     set.theta_min, fluid);
+  // p = 0 on the outflow faces themselves (doc/open_boundaries.md)
+  if (set.ghost_fluid && set.fluid.open.any())
+    fluid::open_surface_fractions(fluid.surface, set.fluid.open, L.d);
 }
 
 namespace {
@@ -286,6 +292,9 @@ bool correct_density(const Layout& L, const StepSettings& set, long long step,
   if (!L.comm.any(mine)) return false;
   fluid::FluidConfig unit = set.fluid;
   unit.rho = 1.0, unit.no_slip = false, unit.wall_no_slip = {};  // displacements free-slip
+  for (auto& side : unit.open.side)  // inflows bring no displacement; outflows keep q = 0
+    if (side.kind == fluid::OpenKind::Inflow)
+      side.shape = fluid::InflowShape::Uniform, side.velocity = 0.0;
   const fluid::SurfaceFractions* surface = set.ghost_fluid ? &f.surface : nullptr;
   FaceField dx(d, Stagger::FaceX, 0.0), dz(d, Stagger::FaceZ, 0.0);
   grid::CellField q(d, Stagger::Cell, 0.0);
@@ -329,6 +338,12 @@ void advect_particles(const Layout& L, const StepSettings& set, long long step,
       if (first.empty() && !theirs.empty()) first = theirs;
     }
     throw core::SolverError(first);
+  }
+  if (set.fluid.open.any()) {  // open sides: out through the outflows, in through the inflows
+    remove_outflow_particles(particles, set.fluid.open, set.spec);
+    std::function<bool(Vec2)> inside;
+    if (solids) inside = [&](Vec2 p) { return locator.inside(p); };
+    inject_inflow_particles(particles, set.particles, set.fluid.open, L.d, inside);
   }
   particles::migrate(particles, L.d);
   grid::GridArray<int> count(L.d, Stagger::Cell, 0);

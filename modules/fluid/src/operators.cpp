@@ -10,6 +10,7 @@
 #include "picdem/core/error.hpp"
 #include "picdem/core/timer.hpp"
 #include "picdem/fluid/fluid.hpp"
+#include "picdem/fluid/open_flow.hpp"
 
 namespace picdem::fluid {
 
@@ -148,6 +149,7 @@ void declare_parameters(core::ParamSchema& schema) {
   schema.passthrough("solver/MueLu_density", "\"multigrid algorithm\": sa\n",
                      "merged over solver/MueLu for the density correction's solve "
                      "(doc/coupling.md)");
+  declare_open_parameters(schema);
 }
 
 FluidConfig config_from(const core::Params& params) {
@@ -164,6 +166,7 @@ FluidConfig config_from(const core::Params& params) {
   }
   c.implicit_viscosity = params.string("fluid/viscosity_scheme") == "implicit";
   c.h = params.real("grid/cell_size");
+  c.open = open_boundaries_from(params, grid::spec_from(params));
   return c;
 }
 
@@ -182,6 +185,8 @@ Apertures open_apertures(const grid::Decomposition& d) {
 
 void enforce_walls(FaceField& u, FaceField& w, const FluidConfig& cfg,
                    const grid::Decomposition& d) {
+  const bool open = cfg.open.any();
+  const OutflowFaces kept = open ? keep_outflow_faces(u, w, cfg.open, d) : OutflowFaces{};
   const int nx = d.spec().nx, nz = d.spec().nz;
   // Tangential ghost = t * mirrored inside value: free-slip t = +1, no-slip t = -1 (per wall).
   auto t_of = [&](TankWall wall) { return no_slip_at(cfg, wall) ? -1.0 : 1.0; };
@@ -219,6 +224,7 @@ void enforce_walls(FaceField& u, FaceField& w, const FluidConfig& cfg,
     for (int i = nx; i < bw.i1; ++i)
       if (w.in_storage(2 * nx - 1 - i, k)) w(i, k) = t_right * w(2 * nx - 1 - i, k);
   }
+  if (open) enforce_open_sides(u, w, cfg.open, d, kept);
 }
 
 void apply_gravity(FaceField& u, FaceField& w, const CellStates& cells, double dt,

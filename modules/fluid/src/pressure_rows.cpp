@@ -49,7 +49,13 @@ void fluid_rows(const CellStates& cells, const Apertures& E, const grid::FaceFie
                     {E.E_z(i, k), surface ? surface->theta_z(i, k) : 1.0, i, k - 1},
                     {E.E_z(i, k + 1), surface ? surface->theta_z(i, k + 1) : 1.0, i, k + 1}};
       for (const auto& f : faces) {
-        if (f.E <= 0.0 || f.i < 0 || f.k < 0 || f.i >= g.nx || f.k >= g.nz) continue;
+        if (f.E <= 0.0) continue;
+        if (f.i < 0 || f.k < 0 || f.i >= g.nx || f.k >= g.nz) {
+          // an open side (open_boundary.hpp): outflow p = 0 at theta h (the face: theta = 1/2
+          // with the ghost fluid), inflow a prescribed velocity (no term)
+          if (outflow_beyond(cfg.open, g, i, k, f.i, f.k)) diag += f.E * s / f.theta;
+          continue;
+        }
         const signed char nb = cells(f.i, f.k);
         if (nb == kSolid) continue;
         // -L_E: diagonal sum_f E_f dt/(rho h); fluid neighbour -E_f dt/(rho h); air: p = 0

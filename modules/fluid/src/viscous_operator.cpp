@@ -98,11 +98,18 @@ void add_boundary_leg(ViscousStencil& s, int r, const Vec2& p, const Vec2& t, do
   } else {
     if (!on_wall) return;  // a neighbour that is not an unknown and not in a body: none here
     const bool tangential = reach < 1.0;
-    const WallKind kind = walls.kind_at(wall_towards(d));
+    WallKind kind = walls.kind_at(wall_towards(d));
+    std::optional<OpenWallPoint> open;
+    if (walls.open) open = walls.open(wall_towards(d), t);
+    if (open) kind = open->kind;
+    if (kind == WallKind::Open) return;                    // outflow, do-nothing: no leg
     if (tangential && kind == WallKind::FreeSlip) return;  // zero gradient: no leg
     leg.body = -1;
     leg.point = t;
-    leg.value = kind == WallKind::Prescribed ? component_of(walls.velocity(t), s.component) : 0.0;
+    if (kind == WallKind::Prescribed)
+      leg.value = component_of(open ? open->velocity : walls.velocity(t), s.component);
+    else
+      leg.value = 0.0;
     leg.weight = 1.0 / reach;
   }
   s.diag[static_cast<std::size_t>(r)] += leg.weight;

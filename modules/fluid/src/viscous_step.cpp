@@ -59,6 +59,18 @@ ViscousWalls viscous_walls_of(const FluidConfig& cfg) {
   ViscousWalls walls{kind(cfg.no_slip), {}, {}};
   for (std::size_t s = 0; s < 4; ++s)
     if (cfg.wall_no_slip[s]) walls.side[s] = kind(*cfg.wall_no_slip[s]);
+  if (!cfg.open.any()) return walls;
+  // Open sides: inflow (the inward face speed, tangential 0) or outflow (do-nothing).
+  walls.open = [open = cfg.open](TankWall wall,
+                                 const core::Vec2& t) -> std::optional<OpenWallPoint> {
+    const auto n = static_cast<std::size_t>(wall);
+    const OpenSide& side = open.side[n];
+    const double along = n < 2 ? t.z : t.x;
+    if (!side.open_at(along)) return std::nullopt;
+    if (side.kind == OpenKind::Outflow) return OpenWallPoint{WallKind::Open, {}};
+    const double v = (n == 0 || n == 2 ? 1.0 : -1.0) * open.face_speed(n, along);
+    return OpenWallPoint{WallKind::Prescribed, n < 2 ? core::Vec2{v, 0.0} : core::Vec2{0.0, v}};
+  };
   return walls;
 }
 

@@ -49,6 +49,8 @@ void write_header(io::CheckpointWriter& out, const CheckpointParts& parts,
   out.attribute("diagnostics", head.diag.scalars());
   out.attribute("diagnostics_solids_in_box", head.diag.solids_in_box);
   if (!head.diag.levels.empty()) out.attribute("diagnostics_levels", head.diag.levels);
+  if (!head.diag.open_volumes.empty())  // open sides (doc/open_boundaries.md)
+    out.attribute("diagnostics_open_volumes", head.diag.open_volumes);
   out.attribute("output_next_frame", head.mark.next_frame);
   out.attribute("output_frames", head.mark.frames);
   out.attribute("output_last_frame_step", head.mark.last_frame_step);
@@ -108,6 +110,8 @@ CheckpointHeader read_header(const io::CheckpointReader& in, const CheckpointPar
       head.diag.solids_in_box = in.attribute_int("diagnostics_solids_in_box");
     if (in.has_attribute("diagnostics_levels"))
       head.diag.levels = in.attribute_doubles("diagnostics_levels");
+    if (in.has_attribute("diagnostics_open_volumes"))
+      head.diag.open_volumes = in.attribute_doubles("diagnostics_open_volumes");
     head.mark.next_frame = in.attribute_double("output_next_frame");
     head.mark.frames = in.attribute_int("output_frames");
     head.mark.last_frame_step = in.attribute_int("output_last_frame_step");

@@ -9,6 +9,7 @@
 #include "picdem/core/log.hpp"
 #include "picdem/core/timer.hpp"
 #include "picdem/dem/dem_solver.hpp"
+#include "picdem/fluid/fluid.hpp"
 #include "picdem/fluid/fluid_state.hpp"
 #include "picdem/geometry/obstacles.hpp"
 #include "picdem/geometry/outline.hpp"
@@ -78,6 +79,8 @@ Output::Output(core::Comm comm, const core::Params& params, const grid::Decompos
   for (std::size_t n = 0; n < probes.size(); ++n)
     columns.push_back("level_" + std::to_string(n + 1));
   if (!params.reals("output/solid_count_box").empty()) columns.push_back("solids_in_box");
+  if (fluid::config_from(params).open.any())  // doc/open_boundaries.md
+    columns.insert(columns.end(), {"inflow_volume", "outflow_volume"});
   timeseries_ =
       std::make_unique<io::CsvWriter>(comm_, dir_ + "/timeseries.csv", columns, append, resume_t);
   solids_ = std::make_unique<io::CsvWriter>(
@@ -102,6 +105,7 @@ void Output::record(const coupling::Diagnostics& g) {
   row.insert(row.end(), g.levels.begin(), g.levels.end());
   if (!params_.reals("output/solid_count_box").empty())
     row.push_back(static_cast<double>(g.solids_in_box));
+  row.insert(row.end(), g.open_volumes.begin(), g.open_volumes.end());
   timeseries_->row(row);
 }
 

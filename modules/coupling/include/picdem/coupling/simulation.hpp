@@ -46,6 +46,9 @@ struct Diagnostics {
   double grid_speed = 0.0;      ///< largest |u|, |w| on the faces after the step [m/s] (not in csv)
   std::vector<double> levels;   ///< free-surface height at output/level_probes [m]
   long long solids_in_box = 0;  ///< solids with their centre in output/solid_count_box
+  /// With open sides (open/): the volumes that entered through the inflows and left through the
+  /// outflows since t = 0 [m^2 per unit depth], from the face velocities; empty without.
+  std::vector<double> open_volumes;
 
   /// The scalar figures from t to solid_kinetic_energy, in this order: the first columns of
   /// timeseries.csv and the checkpoint's 'diagnostics' attribute.

@@ -17,14 +17,15 @@
 #include "picdem/core/comm.hpp"
 #include "picdem/core/params.hpp"
 #include "picdem/core/vec2.hpp"
+#include "picdem/fluid/open_boundary.hpp"
 #include "picdem/grid/field.hpp"
 #include "picdem/grid/grid.hpp"
 
 namespace picdem::fluid {
 
 /// Declares fluid/density, fluid/viscosity, fluid/gravity, fluid/walls, fluid/wall_left,
-/// fluid/wall_right, fluid/wall_bottom, fluid/wall_top, fluid/viscosity_scheme and the solver/
-/// keys.
+/// fluid/wall_right, fluid/wall_bottom, fluid/wall_top, fluid/viscosity_scheme, the solver/ keys
+/// and the open/ keys (open_boundary.hpp).
 void declare_parameters(core::ParamSchema& schema);
 /// Declares free_surface/method, free_surface/theta_min, free_surface/density_correction and
 /// free_surface/density_correction_interval (src/parameters.cpp).
@@ -42,6 +43,7 @@ struct FluidConfig {
   std::array<std::optional<bool>, 4> wall_no_slip{};
   bool implicit_viscosity = false;  ///< fluid/viscosity_scheme: implicit (doc/viscous.md)
   double h = 0.0;                   ///< cell size [m] (grid/cell_size)
+  OpenBoundaries open;              ///< open/ keys: inflow and outflow sides (open_boundary.hpp)
 };
 /// Reads the fluid/ keys and grid/cell_size (declared by grid::declare_parameters).
 FluidConfig config_from(const core::Params& params);
@@ -93,7 +95,8 @@ void apply_viscosity(grid::FaceField& u, grid::FaceField& w, const CellStates& c
 
 /// Normal velocity 0 on the tank walls; in the ghost layers outside the tank, the tangential
 /// component is mirrored (free-slip: u_ghost = u_inside, no-slip: u_ghost = -u_inside) and the
-/// normal component is odd about the wall. Call after the halo is forwarded.
+/// normal component is odd about the wall. Open sides (cfg.open): inflow faces get the inflow
+/// velocity, outflow faces keep theirs (enforce_open_sides). Call after the halo is forwarded.
 void enforce_walls(grid::FaceField& u, grid::FaceField& w, const FluidConfig& cfg,
                    const grid::Decomposition& d);
 

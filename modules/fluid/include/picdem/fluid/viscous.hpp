@@ -39,17 +39,27 @@ struct ViscousBody {
 /// The tank walls: no-slip (0), free-slip (normal 0, zero tangential gradient) or a prescribed
 /// velocity (a function of the wall point; used for exact-solution boundaries). `kind` holds for
 /// every wall without its own entry in `side` (left, right, bottom, top; TankWall order).
-enum class WallKind { NoSlip, FreeSlip, Prescribed };
+/// Open: an outflow (do-nothing: no leg for either component, open_boundary.hpp).
+enum class WallKind { NoSlip, FreeSlip, Prescribed, Open };
+/// A point of an open tank side: Prescribed (inflow, with its velocity) or Open (outflow).
+struct OpenWallPoint {
+  WallKind kind = WallKind::Open;
+  core::Vec2 velocity;
+};
 struct ViscousWalls {
   WallKind kind = WallKind::NoSlip;
   std::function<core::Vec2(const core::Vec2&)> velocity;  ///< for Prescribed
   std::array<std::optional<WallKind>, 4> side{};
+  /// Open sides: the kind (and inflow velocity) at a wall point, overriding the wall's kind;
+  /// empty or nullopt: the wall's.
+  std::function<std::optional<OpenWallPoint>(TankWall, const core::Vec2&)> open{};
   WallKind kind_at(TankWall wall) const {
     const auto& own = side[static_cast<std::size_t>(wall)];
     return own ? *own : kind;
   }
 };
-/// The walls of the step's fluid configuration (fluid/walls and fluid/wall_<side>).
+/// The walls of the step's fluid configuration (fluid/walls, fluid/wall_<side> and the open
+/// sides of cfg.open, their inflow velocity over the step's interval).
 ViscousWalls viscous_walls_of(const FluidConfig& cfg);
 
 /// The tank: cells of size h, nx x nz, lower-left corner at origin.
