@@ -1,7 +1,5 @@
 #include "picdem/coupling/simulation.hpp"
 
-#include "body_forces.hpp"
-#include "picdem/fluid/open_flow.hpp"
 #include "rebalance.hpp"
 #include "step_phases.hpp"
 #include "viscous_bodies.hpp"
@@ -19,6 +17,7 @@
 #include "picdem/dem/dem_solver.hpp"
 #include "picdem/dem/parameters.hpp"
 #include "picdem/fluid/fluid.hpp"
+#include "picdem/fluid/open_flow.hpp"
 #include "picdem/fluid/pressure_solver.hpp"
 #include "picdem/geometry/obstacles.hpp"
 #include "picdem/grid/field.hpp"
@@ -248,7 +247,7 @@ void Simulation::step() {
     project(L, set, dt, m.fluid);                                                 // project
     if (set.fluid.open.any())  // volumes through the open sides (doc/open_boundaries.md)
       open_flux = fluid::open_fluxes(m.fluid.u, m.fluid.w, set.fluid.open, L.d, m.comm);
-    if (!m.obstacles.empty())                                                     // for forces.csv
+    if (!m.obstacles.empty())  // for forces.csv
       m.obstacle_loads = fluid::obstacle_pressure_loads(solids.cut, m.fluid.cells, L.d, m.fluid.p,
                                                         set.quadrature, m.obstacles.size());
     if (m.dem) m.fluid_loads = advance_solids(m.pressure.get(), fluid, dt, m.viscous, *m.dem);
@@ -281,12 +280,28 @@ const dem::DemSolver* Simulation::dem() const {
   return m_->dem.get();
 }
 
-// Every solid's row once a step with water has given them pressure loads (none in a dry run).
+// The rows of forces.csv: every solid by id once a step with water has given them pressure loads
+// (zero for a solid without rows; none in a dry run), then every obstacle; viscous loads zero
+// when the step computed none.
 std::vector<BodyForces> Simulation::body_forces() const {
   const Impl& s = *m_;
-  const bool wet = s.dem && s.set.has_fluid;
-  return coupling::body_forces(wet ? s.dem->gather_all() : std::vector<core::SolidState>{},
-                               s.fluid_loads, s.obstacle_loads, s.viscous);
+  auto of = [](const std::vector<core::SolidLoads>& by_id, std::int64_t id) {
+    const auto it =
+        std::lower_bound(by_id.begin(), by_id.end(), id,
+                         [](const core::SolidLoads& l, std::int64_t key) { return l.id < key; });
+    return it != by_id.end() && it->id == id ? *it : core::SolidLoads{id, {0.0, 0.0}, 0.0};
+  };
+  std::vector<BodyForces> rows;
+  if (s.dem && s.set.has_fluid)
+    for (const auto& st : s.dem->gather_all()) {
+      const auto p = of(s.fluid_loads, st.id), v = of(s.viscous.solids, st.id);
+      rows.push_back({st.id, false, p.force, v.force, p.torque, v.torque});
+    }
+  for (const auto& p : s.obstacle_loads) {
+    const auto v = of(s.viscous.obstacles, p.id);
+    rows.push_back({p.id, true, p.force, v.force, p.torque, v.torque});
+  }
+  return rows;
 }
 
 const std::vector<geometry::Obstacle>& Simulation::obstacles() const {
