@@ -105,7 +105,6 @@ std::vector<core::SolidLoads> obstacle_pressure_loads(
   std::vector<double> table(3 * count, 0.0);  // F_x, F_z, T per obstacle
   const auto own = d.owned_cells();
   const auto& spec = d.spec();
-  const Vec2 rg = quadrature.rho * quadrature.g;
   for (const auto& piece : cut.pieces) {
     if (piece.body >= 0 || !own.contains(piece.i, piece.k) || !fluid_cell(cells, piece.i, piece.k))
       continue;
@@ -118,9 +117,9 @@ std::vector<core::SolidLoads> obstacle_pressure_loads(
     double torque =
         -pc * (xc.x * piece.n_dl.z - xc.z * piece.n_dl.x + piece.dx_n_dl.z - piece.dz_n_dl.x);
     if (quadrature.hydrostatic) {
-      // F_q = -int rho g.(x - x_c) n dl (as quadrature_load), its moment taken at x_c
-      const Vec2 fq{-(rg.x * piece.dx_n_dl.x + rg.z * piece.dz_n_dl.x),
-                    -(rg.x * piece.dx_n_dl.z + rg.z * piece.dz_n_dl.z)};
+      // F_q = -int rho g.(x - x_c) n dl, its moment taken at x_c (r x n is 0 for obstacles)
+      const auto q = quadrature_load(piece, quadrature);
+      const Vec2 fq{q[0], q[1]};
       f += fq;
       torque += xc.x * fq.z - xc.z * fq.x;
     }
