@@ -1,32 +1,19 @@
-// The coupling phases against values worked by hand: the solid couplings of the pressure equation
-// (rows a_{s,c}, quadrature load F_q, predicted velocity V*, eq. 6), the damping of particles in
-// contact gaps (eq. 20) and the solids' snapshot (ordered by id, matched by id across the DEM).
+// The coupling phases against values worked by hand: the damping of particles in contact gaps
+// (eq. 20) and the solids' snapshot (ordered by id, matched by id across the DEM). The solid
+// couplings of the pressure equation are the fluid's: tests/unit/fluid/test_body_loads.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <map>
 #include <memory>
 
 #include "picdem/coupling/solids_in_fluid.hpp"
 #include "picdem/dem/parameters.hpp"
-#include "picdem/fluid/body_loads.hpp"
 #include "picdem/geometry/circle.hpp"
-#include "picdem/geometry/polygon.hpp"
 
 using namespace picdem;
 using core::Vec2;
 
 namespace {
-
-constexpr signed char kFluid = static_cast<signed char>(grid::CellState::Fluid);
-constexpr signed char kAir = static_cast<signed char>(grid::CellState::Air);
-
-// 6 x 6 cells of h = 0.1 on this process alone.
-grid::GridSpec small_spec() {
-  grid::GridSpec s;
-  s.nx = 6, s.nz = 6, s.h = 0.1;
-  return s;
-}
 
 core::SolidState state(std::int64_t id, Vec2 x, Vec2 v = {}, double omega = 0.0) {
   core::SolidState st;
@@ -35,77 +22,6 @@ core::SolidState state(std::int64_t id, Vec2 x, Vec2 v = {}, double omega = 0.0)
 }
 
 }  // namespace
-
-// A 0.1 x 0.2 rectangle centred at (0.3, 0.35): its edges x = 0.25, 0.35 and z = 0.25, 0.45 cut
-// cells i = 2, 3 and k = 2, 3, 4 through their middles. Per cell, with r from the centre of mass:
-//   a = (int n dl, int r x n dl): (2,2) (-0.05, -0.05, -0.0025)  (3,2) (0.05, -0.05, 0.0025)
-//                                 (2,3) (-0.1, 0, 0)             (3,3) (0.1, 0, 0)
-//                                 (2,4) (-0.05, 0.05, 0.0025)    (3,4) (0.05, 0.05, -0.0025)
-// F_q = -int rho g.(x - x_c) (n, r x n) dl = 9810 int (z - z_c) (n, r x n) dl:
-//   force x: -12.2625 on (2,2) and (3,4), +12.2625 on (3,2) and (2,4), 0 elsewhere (z-parts 0);
-//   torque: 9810 int (z - z_c)(r x n) dl = -/+ 9810 / 12000 = -/+ 0.8175, negative on (2,2),
-//   (2,4), (3,3), positive on (3,2), (2,3), (3,4).
-// Cell (3,4) is air: its piece is left out of the rows and of F_q.
-TEST(SolidCouplings, RowsQuadratureLoadAndPredictedVelocityOfARectangle) {
-  const core::Comm self(MPI_COMM_SELF);
-  const auto spec = small_spec();
-  grid::Decomposition d(spec, self, 1);
-  const std::vector<Vec2> verts = {{-0.05, -0.1}, {0.05, -0.1}, {0.05, 0.1}, {-0.05, 0.1}};
-  coupling::SolidScene scene;
-  scene.placements.push_back({7, std::make_shared<geometry::Polygon>(verts), {{0.3, 0.35}, 0.0}});
-  core::SolidState st = state(7, {0.3, 0.35}, {0.1, -0.2}, 0.5);
-  st.mass = 20.0, st.inertia = 0.1;
-  scene.states.push_back(st);
-  fluid::Apertures E;
-  const auto cut = coupling::cut_cells(scene, d, 0.0, E);
-  fluid::CellStates cells(d, grid::Stagger::Cell, kFluid);
-  cells(3, 4) = kAir;
-  const std::vector<core::SolidLoads> collision = {{7, {3.0, -4.0}, 0.02}};
-  const fluid::QuadratureOptions q{true, 1000.0, {0.0, -9.81}};
-  const double dt = 1e-3;
-  const auto out = fluid::solid_couplings(scene.states, cut, cells, d, collision, q, dt);
-  ASSERT_EQ(out.size(), 1u);
-  const auto& c = out[0];
-  EXPECT_EQ(c.id, 7);
-  EXPECT_EQ(c.mass, 20.0);
-  EXPECT_EQ(c.inertia, 0.1);
-  const std::map<std::pair<int, int>, std::array<double, 3>> expected = {
-      {{2, 2}, {-0.05, -0.05, -0.0025}},
-      {{3, 2}, {0.05, -0.05, 0.0025}},
-      {{2, 3}, {-0.1, 0.0, 0.0}},
-      {{3, 3}, {0.1, 0.0, 0.0}},
-      {{2, 4}, {-0.05, 0.05, 0.0025}}};
-  ASSERT_EQ(c.cells.size(), expected.size());
-  ASSERT_EQ(c.a.size(), expected.size());
-  for (std::size_t n = 0; n < c.cells.size(); ++n) {
-    const int i = static_cast<int>(c.cells[n] % spec.nx),
-              k = static_cast<int>(c.cells[n] / spec.nx);
-    ASSERT_EQ(spec.cell_gid(i, k), c.cells[n]);
-    const auto it = expected.find({i, k});
-    ASSERT_NE(it, expected.end()) << "cell " << i << " " << k;
-    for (int m = 0; m < 3; ++m)
-      EXPECT_NEAR(c.a[n][static_cast<std::size_t>(m)], it->second[static_cast<std::size_t>(m)],
-                  1e-15)
-          << "cell " << i << " " << k << " component " << m;
-  }
-  // F_q over the five fluid cells: (-12.2625 + 12.2625 + 12.2625, 0), torque -0.8175.
-  EXPECT_NEAR(c.load[0], 12.2625, 1e-11);
-  EXPECT_NEAR(c.load[1], 0.0, 1e-11);
-  EXPECT_NEAR(c.load[2], -0.8175, 1e-12);
-  // V* = V + dt (g + (F_coll + F_q) / M), omega* = omega + dt (T_coll + T_q) / I
-  EXPECT_NEAR(c.v_star[0], 0.1 + dt * (3.0 + 12.2625) / 20.0, 1e-14);
-  EXPECT_NEAR(c.v_star[1], -0.2 + dt * (-9.81 - 4.0 / 20.0), 1e-14);
-  EXPECT_NEAR(c.v_star[2], 0.5 + dt * (0.02 - 0.8175) / 0.1, 1e-13);
-
-  // Without the quadrature: no load, V* from gravity and the collision only.
-  const fluid::QuadratureOptions one_point{false, 1000.0, {0.0, -9.81}};
-  const auto plain = fluid::solid_couplings(scene.states, cut, cells, d, collision, one_point, dt);
-  ASSERT_EQ(plain.size(), 1u);
-  EXPECT_EQ(plain[0].load[0], 0.0);
-  EXPECT_EQ(plain[0].load[2], 0.0);
-  EXPECT_NEAR(plain[0].v_star[0], 0.1 + dt * 3.0 / 20.0, 1e-15);
-  EXPECT_NEAR(plain[0].v_star[2], 0.5 + dt * 0.02 / 0.1, 1e-15);
-}
 
 // Eq. 20 with h = 0.01, beta = 0.2: the band of a contact is 0.04 long (along the tangent) and
 // 0.02 wide; C = beta + (1 - beta) along / 0.02.
