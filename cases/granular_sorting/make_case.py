@@ -1,0 +1,86 @@
+#!/usr/bin/env python3
+"""Writes case.yaml of the gravity-sorting case (the MPS paper's segregated lamination, Kim et al.
+2018, sec. 5, Figs. 10-13, in 2D with disks, dry as the paper's).
+
+The apparatus is the angle-of-repose case's (cases/angle_of_repose/make_case.py: a container of
+inner width 0.2 m whose bottom has a slot 0.07 m wide, its underside 0.17 m above a toothed floor
+in a 1.6 m tank). Three populations of equal size and different density (DENSITIES, light to
+heavy) fill the container in six layers, from the bottom: light, medium, heavy, light, medium,
+heavy, PER_LAYER disks each, placed at random (placement box) in bands LAYER_H high. The heavy
+grains start highest on average, so that they can end lowest only by sorting, not by leaving the
+container first. At t = 0 the grains run out through the slot and pile up below it.
+`python3 make_case.py reversed` writes the control: the same layers with heavy and light swapped
+(heavy, medium, light, heavy, medium, light from the bottom), so that the heavy grains leave first.
+Rerun after changing a constant: python3 make_case.py [reversed] > case.yaml
+"""
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..",
+                                "angle_of_repose"))
+import make_case as repose  # noqa: E402  (the cargo-dump geometry)
+
+DENSITIES = (1500, 2500, 3500)
+PER_LAYER, LAYER_H, T_END, MU = 50, 0.07, 2.5, 0.2
+
+
+def main():
+    order = DENSITIES[::-1] if len(sys.argv) > 1 and sys.argv[1] == "reversed" else DENSITIES
+    xc, mouth = repose.TANK_L / 2, repose.MOUTH_Z
+    (lx, lz), (rx, rz) = repose.containers(xc, mouth)
+    x0, x1 = xc - repose.BOX_W / 2, xc + repose.BOX_W / 2
+    z = mouth + repose.WALL_T
+    layers = []
+    for k in range(6):
+        rho = order[k % 3]
+        layers.append(f"""  layer_{k}:
+    type: graded_packing
+    density: {rho}
+    region: [{x0:.6g}, {z + k * LAYER_H:.6g}, {x1:.6g}, {z + (k + 1) * LAYER_H:.6g}]
+    placement: box
+    count: {PER_LAYER}
+    basis: number
+    d_min: 0.009
+    d50: 0.01
+    d_max: 0.011
+    seed: {k + 1}""")
+    print(f"""# Gravity sorting (segregated lamination) of grains of three densities (Kim et al. 2018, sec. 5),
+# dry, in 2D. Written by make_case.py - edit that script, not this file. README.md says more.
+# {6 * PER_LAYER} disks, d from 9 to 11 mm, densities {order[0]}, {order[1]}, {order[2]}, {order[0]}, {order[1]}, {order[2]} in six
+# layers from the bottom, in the cargo-dump container of
+# cases/angle_of_repose (slot 0.07 m wide, mouth {mouth:g} m above the toothed floor); they run out at t = 0.
+case:
+  name: granular_sorting
+grid:
+  length: {repose.TANK_L}
+  height: {repose.TANK_H}
+  cell_size: 0.002
+time:
+  end: {T_END}
+  dt_max: 0.0001
+output:
+  interval: 0.05
+  paraview: false
+  png: false
+  directory: out_granular_sorting
+dem:
+  mu: {MU}
+  tangential_model: accumulated
+  gap_cells: 1
+  theta: 0.002
+obstacles:
+{repose.teeth_yaml()}
+  container_left:
+    type: polygon
+    x: {repose.fmt(lx)}
+    z: {repose.fmt(lz)}
+  container_right:
+    type: polygon
+    x: {repose.fmt(rx)}
+    z: {repose.fmt(rz)}
+solids:
+{chr(10).join(layers)}""")
+
+
+if __name__ == "__main__":
+    main()
