@@ -44,6 +44,12 @@ void declare_obstacle_parameters(core::ParamSchema& schema) {
   pipe.real("hole_spacing", 0.0,
             "distance between hole centres, the first at bottom + spacing / 2 [m]")
       .non_negative();
+  // Per obstacle: the viscous condition on its boundary (doc/viscous.md)
+  for (auto* v : {&box, &poly, &line, &pipe})
+    v->string("wall", "no_slip", {"no_slip", "free_slip"},
+              "viscous condition on the boundary with fluid/viscosity_scheme: implicit: no_slip, "
+              "or free_slip (the tangential legs dropped: exact on grid-aligned edges only; "
+              "doc/viscous.md)");
 }
 
 namespace {

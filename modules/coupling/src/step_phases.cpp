@@ -177,8 +177,11 @@ ViscousExchange add_forces(const Layout& L, const fluid::FluidConfig& cfg, bool 
     // Viscosity on u^n, then gravity: the implicit solve would diffuse g dt against the walls and
     // bodies into a rotational field the projection cannot remove (doc/viscous.md).
     const SolidScene all = scene_of_all(dem, obstacles);
-    const auto step = fluid::apply_viscosity_implicit(f.u, f.w, f.cells, dt, cfg, L.d, L.halo,
-                                                      viscous_bodies(all, rigid_rows));
+    auto bodies = viscous_bodies(all, rigid_rows);
+    for (std::size_t o = 0; o < cfg.obstacle_free_slip.size(); ++o)  // obstacles/<name>/wall
+      bodies[all.placements.size() + o].free_slip = cfg.obstacle_free_slip[o] != 0;
+    const auto step =
+        fluid::apply_viscosity_implicit(f.u, f.w, f.cells, dt, cfg, L.d, L.halo, bodies);
     viscous = viscous_exchange(all, step.loads, dem, L.comm);
     f.viscous_wall_force = step.loads.wall_force;
     fluid::apply_gravity(f.u, f.w, f.cells, dt, cfg);  // on owned faces: the halo follows

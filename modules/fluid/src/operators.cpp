@@ -167,6 +167,9 @@ FluidConfig config_from(const core::Params& params) {
   c.implicit_viscosity = params.string("fluid/viscosity_scheme") == "implicit";
   c.h = params.real("grid/cell_size");
   c.open = open_boundaries_from(params, grid::spec_from(params));
+  if (params.has("obstacles"))
+    for (const auto& name : params.sublist_names("obstacles"))
+      c.obstacle_free_slip.push_back(params.string("obstacles/" + name + "/wall") == "free_slip");
   return c;
 }
 

@@ -90,6 +90,9 @@ void add_boundary_leg(ViscousStencil& s, int r, const Vec2& p, const Vec2& t, do
   ViscousLeg leg;
   leg.unknown = r;
   if (c.body >= 0) {
+    // free-slip body: no leg for the component across the leg's direction (zero gradient)
+    const bool across = (kDi[d] != 0) != (s.component == 0);
+    if (across && bodies[static_cast<std::size_t>(c.body)].free_slip) return;
     leg.body = c.body;
     leg.point = p + c.s * (t - p);
     leg.value =

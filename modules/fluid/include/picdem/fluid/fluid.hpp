@@ -44,6 +44,9 @@ struct FluidConfig {
   bool implicit_viscosity = false;  ///< fluid/viscosity_scheme: implicit (doc/viscous.md)
   double h = 0.0;                   ///< cell size [m] (grid/cell_size)
   OpenBoundaries open;              ///< open/ keys: inflow and outflow sides (open_boundary.hpp)
+  /// Per obstacle, in the case's order: obstacles/<name>/wall is free_slip (implicit viscosity,
+  /// ViscousBody::free_slip).
+  std::vector<char> obstacle_free_slip;
 };
 /// Reads the fluid/ keys and grid/cell_size (declared by grid::declare_parameters).
 FluidConfig config_from(const core::Params& params);

@@ -31,6 +31,10 @@ struct ViscousBody {
   core::Vec2 centre;
   double area = 0.0;
   double mass = 0.0, inertia = 0.0;
+  /// Free-slip boundary (obstacles/<name>/wall): the legs of the tangential component (the
+  /// component across the leg's direction) are dropped, zero gradient; the component along the
+  /// leg keeps the body's velocity. Exact on grid-aligned edges only (doc/viscous.md).
+  bool free_slip = false;
   core::Vec2 velocity_at(const core::Vec2& x) const {
     return {velocity.x - omega * (x.z - centre.z), velocity.z + omega * (x.x - centre.x)};
   }
