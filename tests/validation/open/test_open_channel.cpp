@@ -9,7 +9,7 @@
 // pressure solve's tolerance, and V(t) = V0 + in - out within 1e-3 of the inflow volume.
 // FillAndDrainVolumeBalance: a tank with a free surface (cases/hydrostatic_tank), an inflow of
 // 0.1 m/s low on the left, an outflow low on the right (the water leaves under its hydrostatic
-// head), gravity on: V(t) = V0 + in - out within 1% of V0 at every step (measured 0.11%), V from
+// head), gravity on: V(t) = V0 + in - out within 1% of V0 at every step (measured 0.12%), V from
 // the particles' occupancy; in and out are 12% and 23% of V0.
 #include <gtest/gtest.h>
 
