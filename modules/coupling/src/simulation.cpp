@@ -240,8 +240,8 @@ void Simulation::step() {
     solids = place_solids(L, set, m.dem.get(), m.obstacles, m.fluid.apertures);  // geometry
     mark_cells(L, set, solids.cut, m.particles, m.occupancy, m.fluid);           // transfer
     if (correct_density(L, set, m.step, solids, m.fluid, m.density_solver.get(), m.particles))
-      mark_cells(L, set, solids.cut, m.particles, m.occupancy, m.fluid);  // density: cells again
-    particles_to_grid(L, set, solids, m.particles, m.fluid);              // transfer
+      mark_cells(L, set, solids.cut, m.particles, m.occupancy, m.fluid);   // density: cells again
+    particles_to_grid(L, set, solids, m.particles, m.occupancy, m.fluid);  // transfer
     m.viscous = add_forces(L, set.fluid, set.viscous_rigid_rows, m.dem.get(), m.obstacles, dt,
                            m.fluid);                     // forces
     auto collision = predict_contacts(m.dem.get(), dt);  // contact

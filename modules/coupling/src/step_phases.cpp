@@ -111,15 +111,26 @@ SolidsAtStart place_solids(const Layout& L, const StepSettings& set, const dem::
 namespace {
 
 // The particles' occupancy S before the open-share correction and their count per cell, from
-// the cache when current.
+// the cache when current; with `sums`, P2G's sums in the same pass over the particles.
 void particle_occupancy(const Layout& L, const StepSettings& set,
-                        const particles::ParticleSet& particles, ParticleOccupancy& occ) {
+                        const particles::ParticleSet& particles, bool sums,
+                        ParticleOccupancy& occ) {
   if (occ.current) return;
   const int per_cell = set.particles.per_cell_1d * set.particles.per_cell_1d;
   if (occ.S.data().empty()) occ.S = grid::CellField(L.d, Stagger::Cell, 0.0);
   if (occ.count.data().empty()) occ.count = grid::GridArray<int>(L.d, Stagger::Cell, 0);
-  particles::occupancy(particles, L.d, L.halo, per_cell, occ.S, &occ.count);
+  if (sums)
+    particles::occupancy(particles, L.d, L.halo, per_cell, occ.S, occ.count, set.particles,
+                         occ.sums);
+  else
+    particles::occupancy(particles, L.d, L.halo, per_cell, occ.S, &occ.count);
   occ.current = true;
+  occ.sums_current = sums;
+}
+
+// True when `step` corrects the density (correct_density may move the particles).
+bool density_step(const StepSettings& set, long long step) {
+  return set.density_relaxation > 0.0 && step % set.density_interval == 0;
 }
 
 }  // namespace
@@ -130,7 +141,7 @@ void mark_cells(const Layout& L, const StepSettings& set, const geometry::CutCel
                 const particles::ParticleSet& particles, ParticleOccupancy& occ,
                 fluid::FluidState& fluid) {
   core::ScopedTimer timer("transfer: mark cells");
-  particle_occupancy(L, set, particles, occ);
+  particle_occupancy(L, set, particles, true, occ);
   fluid.occupancy = occ.S;
   occ.current = false;  // the particles move before the next use
   fluid::mark_cells(occ.count, set.has_bodies ? &cut : nullptr, L.d, L.halo, set.ghost_fluid,
@@ -158,9 +169,14 @@ void extend(const Layout& L, const StepSettings& set, const std::vector<core::So
 
 // u~ before forces is kept for the FLIP increment.
 void particles_to_grid(const Layout& L, const StepSettings& set, const SolidsAtStart& solids,
-                       const particles::ParticleSet& particles, fluid::FluidState& f) {
+                       const particles::ParticleSet& particles, ParticleOccupancy& occ,
+                       fluid::FluidState& f) {
   core::ScopedTimer timer("transfer: particles to grid");
-  particles::to_grid(particles, L.d, L.halo, set.particles, f.u, f.w, f.weight_u, f.weight_w);
+  if (occ.sums_current)  // the sums of the occupancy's pass: the same particles
+    particles::to_grid(occ.sums, L.halo, f.u, f.w, f.weight_u, f.weight_w);
+  else
+    particles::to_grid(particles, L.d, L.halo, set.particles, f.u, f.w, f.weight_u, f.weight_w);
+  occ.sums_current = false;
   fluid::enforce_walls(f.u, f.w, set.fluid, L.d);
   extend(L, set, solids.scene.states, solids.cut, true, f);
   f.u_old = f.u, f.w_old = f.w;
@@ -404,7 +420,7 @@ Diagnostics record_diagnostics(const Layout& L, const StepSettings& set, double 
   g.particles = comm.sum(static_cast<long long>(P.x.size()));
   if (fluid) {
     // S of the particles where the step leaves them: kept for the next step's cells
-    particle_occupancy(L, set, P, occ);
+    particle_occupancy(L, set, P, !density_step(set, step), occ);  // P2G's sums: unmoved
     fluid->occupancy = occ.S;
     const geometry::CutCells* cut = set.has_bodies ? &solids->cut : nullptr;
     if (cut) fluid::open_share_correction(fluid->occupancy, *cut, L.d);

@@ -16,6 +16,7 @@
 #include "picdem/geometry/cut_cells.hpp"
 #include "picdem/grid/field.hpp"
 #include "picdem/particles/particle_set.hpp"
+#include "picdem/particles/transfer.hpp"
 #include "viscous_bodies.hpp"
 
 namespace picdem::coupling {
@@ -60,11 +61,16 @@ struct SolidsAtStart {
 /// The particles' occupancy before the open-share correction (particles::occupancy) and their
 /// count per cell, computed in one pass for the particles where a step leaves them: by the
 /// diagnostics, then read by the next step's cells. `current` is cleared when the particles move
-/// (the cells of a step take it).
+/// (the cells of a step take it). The same pass also takes P2G's sums (`sums`, `sums_current`)
+/// when the particles stay as they are until the step's P2G: always in the cells of a step, in
+/// the diagnostics when the next step has no density correction (which moves them, and is
+/// followed by the cells again); P2G takes them and clears `sums_current`.
 struct ParticleOccupancy {
   grid::CellField S;
   grid::GridArray<int> count;
+  particles::GridSums sums;
   bool current = false;
+  bool sums_current = false;
 };
 
 /// Collective: the largest particle speed |v| over all ranks (0 without particles).
@@ -101,9 +107,11 @@ bool correct_density(const Layout& L, const StepSettings& set, long long step,
                      const SolidsAtStart& solids, const fluid::FluidState& fluid,
                      fluid::PressureSolver* solver, particles::ParticleSet& particles);
 
-/// transfer: particles -> faces, walls, fluid-face mask, rigid faces, extension; u_old = u.
+/// transfer: particles -> faces (from occ.sums when current), walls, fluid-face mask, rigid faces,
+/// extension; u_old = u.
 void particles_to_grid(const Layout& L, const StepSettings& set, const SolidsAtStart& solids,
-                       const particles::ParticleSet& particles, fluid::FluidState& fluid);
+                       const particles::ParticleSet& particles, ParticleOccupancy& occ,
+                       fluid::FluidState& fluid);
 
 /// forces: gravity and viscosity -> u~. Explicit, or implicit at the true boundaries of every
 /// solid of `dem` (collective) and obstacle, the solids' rigid velocities unknowns of it with

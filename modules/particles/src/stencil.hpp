@@ -90,6 +90,60 @@ inline Stencil unclamped_stencil(const Axes& a, core::Vec2 p) {
   return st;
 }
 
+/// The stencils of p on the cell centres (unclamped, as unclamped_stencil), the u faces and the w
+/// faces (as stencil), with the four sample coordinates and their floors computed once: the
+/// centres share their x samples with the w faces and their z samples with the u faces (the same
+/// x0, z0). Bitwise the stencils of the separate calls.
+inline void three_stencils(const Axes& c, const Axes& u, const Axes& w, core::Vec2 p, Stencil& sc,
+                           Stencil& su, Stencil& sw) {
+  const double xh = p.x * c.inv_h - c.x0, zh = p.z * c.inv_h - c.z0;  // half-cell lattice
+  const double xw = p.x * u.inv_h - u.x0, zw = p.z * w.inv_h - w.z0;  // whole-cell lattice
+  const int ih = floor_int(xh), kh = floor_int(zh), iw = floor_int(xw), kw = floor_int(zw);
+  sc.i = ih, sc.k = kh, sc.fx = xh - ih, sc.fz = zh - kh;
+  su.i = std::clamp(iw, 0, u.ni - 2), su.k = std::clamp(kh, 0, u.nk - 2);
+  su.fx = xw - su.i, su.fz = zh - su.k;
+  sw.i = std::clamp(ih, 0, w.ni - 2), sw.k = std::clamp(kw, 0, w.nk - 2);
+  sw.fx = xh - sw.i, sw.fz = zw - sw.k;
+}
+
+/// True when three_stencils gives the separate calls' stencils for these axes (they come from
+/// one GridSpec).
+inline bool shared_lattice(const Axes& c, const Axes& u, const Axes& w) {
+  return c.x0 == w.x0 && c.z0 == u.z0 && c.inv_h == u.inv_h && c.inv_h == w.inv_h;
+}
+
+/// Adds one particle's velocity component v and its kernel weights to the four faces of its
+/// stencil: m and wt the momentum and weight storage, f the index of the base face, row the
+/// storage row length; gx, gz the APIC gradient row times h (0 under FLIP/PIC).
+inline void scatter_one(const Stencil& sten, double v, double gx, double gz, double* m, double* wt,
+                        std::size_t f, std::size_t row) {
+  // kernel clamped to the grid's faces: its centre x_c is p moved onto the outermost row
+  const double fx = std::clamp(sten.fx, 0.0, 1.0), fz = std::clamp(sten.fz, 0.0, 1.0);
+  // N_f = (1 - |x_f - x_c| / h)(1 - |z_f - z_c| / h)
+  const double w00 = (1.0 - fx) * (1.0 - fz), w10 = fx * (1.0 - fz);
+  const double w01 = (1.0 - fx) * fz, w11 = fx * fz;
+  // APIC: v_f = v_p + C (x_f - x_c); x_f - x_c = ((a - fx) h, (b - fz) h) for face (i+a, k+b)
+  const double v00 = v - gx * fx - gz * fz;
+  const double v10 = v00 + gx, v01 = v00 + gz, v11 = v00 + gx + gz;
+  m[f] += w00 * v00;
+  m[f + 1] += w10 * v10;
+  m[f + row] += w01 * v01;
+  m[f + row + 1] += w11 * v11;
+  wt[f] += w00;
+  wt[f + 1] += w10;
+  wt[f + row] += w01;
+  wt[f + row + 1] += w11;
+}
+
+/// Makes f a zeroed field of stagger s on d's storage, reusing its memory when it fits.
+template <class T>
+void reset(grid::GridArray<T>& f, const grid::Decomposition& d, grid::Stagger s) {
+  if (f.stagger() == s && f.storage() == d.storage(s) && f.owned() == d.owned(s))
+    f.fill(T{});
+  else
+    f = grid::GridArray<T>(d, s, T{});
+}
+
 /// Throws when the stencil reaches outside the field's storage (the particle left the halo).
 inline void check_in_storage(const grid::FaceField& f, const Stencil& st, core::Vec2 p) {
   const core::IndexBox& b = f.storage();

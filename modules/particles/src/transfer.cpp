@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <utility>
 
 #include "picdem/core/timer.hpp"
 #include "stencil.hpp"
@@ -13,47 +14,25 @@ using grid::Stagger;
 
 namespace {
 
-/// Makes f a zeroed field of stagger s on d's storage, reusing its memory when it fits.
-template <class T>
-void reset(grid::GridArray<T>& f, const grid::Decomposition& d, Stagger s) {
-  if (f.stagger() == s && f.storage() == d.storage(s) && f.owned() == d.owned(s))
-    f.fill(T{});
-  else
-    f = grid::GridArray<T>(d, s, T{});
-}
-
-/// Scatters the component v (with the APIC row c_x, c_z when given) and the kernel weights.
-void scatter(const ParticleSet& p, const grid::GridSpec& s, Stagger st,
-             const std::vector<double>& v, const std::vector<double>* c_x,
-             const std::vector<double>* c_z, FaceField& momentum, FaceField& weight) {
-  const std::size_t row = static_cast<std::size_t>(momentum.storage().nx());
-  double* m = momentum.data().data();
-  double* wt = weight.data().data();
+/// Scatters both velocity components (with the APIC rows of C when `apic`) and their kernel
+/// weights, in one pass over the particles.
+void scatter(const ParticleSet& p, const grid::GridSpec& s, bool apic, FaceField& u, FaceField& w,
+             FaceField& weight_u, FaceField& weight_w) {
+  const std::size_t row_u = static_cast<std::size_t>(u.storage().nx());
+  const std::size_t row_w = static_cast<std::size_t>(w.storage().nx());
+  double *mu = u.data().data(), *wu = weight_u.data().data();
+  double *mw = w.data().data(), *ww = weight_w.data().data();
   const double h = s.h;
-  const detail::Axes ax = detail::axes(s, st);
+  const detail::Axes ax_u = detail::axes(s, Stagger::FaceX), ax_w = detail::axes(s, Stagger::FaceZ);
   for (std::size_t n = 0; n < p.size(); ++n) {
     const core::Vec2 pos{p.x[n], p.z[n]};
-    detail::Stencil sten = detail::stencil(ax, pos);
-    detail::check_in_storage(momentum, sten, pos);
-    // kernel clamped to the grid's faces: its centre x_c is p moved onto the outermost row
-    const double fx = std::clamp(sten.fx, 0.0, 1.0), fz = std::clamp(sten.fz, 0.0, 1.0);
-    // N_f = (1 - |x_f - x_c| / h)(1 - |z_f - z_c| / h)
-    const double w00 = (1.0 - fx) * (1.0 - fz), w10 = fx * (1.0 - fz);
-    const double w01 = (1.0 - fx) * fz, w11 = fx * fz;
-    // APIC: v_f = v_p + C (x_f - x_c); x_f - x_c = ((a - fx) h, (b - fz) h) for face (i+a, k+b)
-    double gx = 0.0, gz = 0.0;
-    if (c_x) gx = (*c_x)[n] * h, gz = (*c_z)[n] * h;
-    const double v00 = v[n] - gx * fx - gz * fz;
-    const double v10 = v00 + gx, v01 = v00 + gz, v11 = v00 + gx + gz;
-    const std::size_t f = momentum.index(sten.i, sten.k);
-    m[f] += w00 * v00;
-    m[f + 1] += w10 * v10;
-    m[f + row] += w01 * v01;
-    m[f + row + 1] += w11 * v11;
-    wt[f] += w00;
-    wt[f + 1] += w10;
-    wt[f + row] += w01;
-    wt[f + row + 1] += w11;
+    const detail::Stencil su = detail::stencil(ax_u, pos), sw = detail::stencil(ax_w, pos);
+    detail::check_in_storage(u, su, pos);
+    detail::check_in_storage(w, sw, pos);
+    double gxu = 0.0, gzu = 0.0, gxw = 0.0, gzw = 0.0;
+    if (apic) gxu = p.cxx[n] * h, gzu = p.cxz[n] * h, gxw = p.czx[n] * h, gzw = p.czz[n] * h;
+    detail::scatter_one(su, p.u[n], gxu, gzu, mu, wu, u.index(su.i, su.k), row_u);
+    detail::scatter_one(sw, p.w[n], gxw, gzw, mw, ww, w.index(sw.i, sw.k), row_w);
   }
 }
 
@@ -72,25 +51,35 @@ void divide(FaceField& u, FaceField& weight) {
     }
 }
 
+// The sums reverse-added to the owners, divided, forwarded.
+void exchange_and_divide(const grid::Halo& halo, FaceField& u, FaceField& w, FaceField& weight_u,
+                         FaceField& weight_w) {
+  for (FaceField* f : {&u, &weight_u, &w, &weight_w}) halo.reverse_add(*f);
+  divide(u, weight_u);
+  divide(w, weight_w);
+  for (FaceField* f : {&u, &weight_u, &w, &weight_w}) halo.forward(*f);
+}
+
 }  // namespace
 
 void to_grid(const ParticleSet& p, const grid::Decomposition& d, const grid::Halo& halo,
              const ParticleConfig& config, FaceField& u, FaceField& w, FaceField& weight_u,
              FaceField& weight_w) {
   core::ScopedTimer timer("particles: to_grid");
-  reset(u, d, Stagger::FaceX);
-  reset(weight_u, d, Stagger::FaceX);
-  reset(w, d, Stagger::FaceZ);
-  reset(weight_w, d, Stagger::FaceZ);
-  const bool apic = config.transfer == TransferScheme::Apic;
-  scatter(p, d.spec(), Stagger::FaceX, p.u, apic ? &p.cxx : nullptr, apic ? &p.cxz : nullptr, u,
-          weight_u);
-  scatter(p, d.spec(), Stagger::FaceZ, p.w, apic ? &p.czx : nullptr, apic ? &p.czz : nullptr, w,
-          weight_w);
-  for (FaceField* f : {&u, &weight_u, &w, &weight_w}) halo.reverse_add(*f);
-  divide(u, weight_u);
-  divide(w, weight_w);
-  for (FaceField* f : {&u, &weight_u, &w, &weight_w}) halo.forward(*f);
+  detail::reset(u, d, Stagger::FaceX);
+  detail::reset(weight_u, d, Stagger::FaceX);
+  detail::reset(w, d, Stagger::FaceZ);
+  detail::reset(weight_w, d, Stagger::FaceZ);
+  scatter(p, d.spec(), config.transfer == TransferScheme::Apic, u, w, weight_u, weight_w);
+  exchange_and_divide(halo, u, w, weight_u, weight_w);
+}
+
+void to_grid(GridSums& sums, const grid::Halo& halo, FaceField& u, FaceField& w,
+             FaceField& weight_u, FaceField& weight_w) {
+  core::ScopedTimer timer("particles: to_grid from sums");
+  std::swap(sums.u, u), std::swap(sums.w, w);
+  std::swap(sums.weight_u, weight_u), std::swap(sums.weight_w, weight_w);
+  exchange_and_divide(halo, u, w, weight_u, weight_w);
 }
 
 void count_per_cell(const ParticleSet& p, const grid::Halo& halo, grid::GridArray<int>& count) {

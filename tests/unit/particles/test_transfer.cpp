@@ -3,15 +3,18 @@
 //   face with weight; G2P (APIC, FLIP, PIC) of linear grid fields gives them at every particle,
 //   wall strips included (tolerance 1e-12 on values of order 1);
 // - P2G conserves momentum: sum_p v_p = sum_f m_f u_f and sum_p 1 = sum_f m_f (1e-12 relative);
-// - the grid fields and the counts per cell equal the single-rank ones (1e-13).
+// - the grid fields and the counts per cell equal the single-rank ones (1e-13);
+// - the occupancy's pass with P2G's sums gives occupancy, count and to_grid bit for bit.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 #include "particle_testing.hpp"
 #include "picdem/core/error.hpp"
 #include "picdem/core/rng.hpp"
+#include "picdem/particles/occupancy.hpp"
 #include "picdem/particles/particles.hpp"
 
 using namespace picdem;
@@ -232,4 +235,50 @@ TEST(Transfer, GridAndCountsMatchSingleRank) {
   EXPECT_EQ(comm.sum(owned_total), static_cast<long long>(q.size()));
   ParticleSet bare;  // no grid attached: counting must refuse rather than guess
   EXPECT_THROW(count_per_cell(bare, halo, count), core::SolverError);
+}
+
+namespace {
+
+template <class T>
+bool same_bits(const grid::GridArray<T>& a, const grid::GridArray<T>& b) {
+  return a.storage() == b.storage() && a.data().size() == b.data().size() &&
+         std::memcmp(a.data().data(), b.data().data(), a.data().size() * sizeof(T)) == 0;
+}
+
+}  // namespace
+
+TEST(Transfer, OccupancyPassWithSumsIsBitwiseOccupancyAndToGrid) {
+  const grid::GridSpec s = tank();
+  core::Comm comm;
+  for (TransferScheme scheme : {TransferScheme::Flip, TransferScheme::Apic}) {
+    ParticleConfig c;
+    c.transfer = scheme;
+    c.jitter = 1.0;  // particles in the wall strips, where P2G clamps its kernel
+    const auto in_drop = [](core::Vec2 x) { return x.z < 0.4 || (x.x - 0.1) * (x.x - 0.1) < 0.02; };
+    grid::Decomposition d(s, comm, required_halo(c));
+    grid::Halo halo(d);
+    ParticleSet p = seed(d, c, in_drop);
+    GridSums sums;
+    grid::CellField S_ref(d, Stagger::Cell), S(d, Stagger::Cell);
+    grid::GridArray<int> count_ref(d, Stagger::Cell), count(d, Stagger::Cell);
+    Grid g;
+    long long differ = 0;
+    for (int round = 0; round < 2; ++round) {  // the second reuses the sums' and fields' memory
+      for (std::size_t n = 0; n < p.size(); ++n) {
+        const std::int64_t id = p.id[n] + 1000 * round;
+        p.u[n] = rnd(id, 0), p.w[n] = rnd(id, 1);
+        if (scheme == TransferScheme::Apic)
+          p.cxx[n] = 40 * rnd(id, 2), p.cxz[n] = 40 * rnd(id, 3), p.czx[n] = 40 * rnd(id, 4),
+          p.czz[n] = 40 * rnd(id, 5);
+      }
+      const Grid ref = p2g(p, d, c);
+      occupancy(p, d, halo, 4, S_ref, &count_ref);
+      occupancy(p, d, halo, 4, S, count, c, sums);
+      to_grid(sums, halo, g.u, g.w, g.mu, g.mw);
+      differ += !same_bits(S, S_ref) + !same_bits(count, count_ref);
+      differ += !same_bits(g.u, ref.u) + !same_bits(g.w, ref.w);
+      differ += !same_bits(g.mu, ref.mu) + !same_bits(g.mw, ref.mw);
+    }
+    EXPECT_EQ(comm.sum(differ), 0) << (scheme == TransferScheme::Apic ? "apic" : "flip");
+  }
 }

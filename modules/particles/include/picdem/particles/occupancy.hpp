@@ -4,6 +4,7 @@
 // module reads it as the free surface (picdem/fluid/free_surface.hpp).
 #include "picdem/grid/field.hpp"
 #include "picdem/particles/particle_set.hpp"
+#include "picdem/particles/transfer.hpp"
 
 namespace picdem::particles {
 
@@ -14,5 +15,12 @@ namespace picdem::particles {
 /// count_per_cell (the same values) in the same pass over the particles.
 void occupancy(const ParticleSet& ps, const grid::Decomposition& d, const grid::Halo& halo,
                int particles_per_cell, grid::CellField& S, grid::GridArray<int>* count = nullptr);
+
+/// occupancy with the count, and to_grid's pass over the particles in the same pass: `sums`
+/// holds P2G's momentum and weights (of `config`'s transfer) before their exchange, for
+/// to_grid(sums, ...), which then gives bitwise what to_grid of the same particles gives.
+void occupancy(const ParticleSet& ps, const grid::Decomposition& d, const grid::Halo& halo,
+               int particles_per_cell, grid::CellField& S, grid::GridArray<int>& count,
+               const ParticleConfig& config, GridSums& sums);
 
 }  // namespace picdem::particles

@@ -20,6 +20,19 @@ void to_grid(const ParticleSet& particles, const grid::Decomposition& decomposit
              const grid::Halo& halo, const ParticleConfig& config, grid::FaceField& u,
              grid::FaceField& w, grid::FaceField& weight_u, grid::FaceField& weight_w);
 
+/// to_grid's sums before they are exchanged: momentum and kernel weight per face over owned and
+/// halo faces, as one pass over the particles leaves them (the occupancy's pass can take them:
+/// picdem/particles/occupancy.hpp).
+struct GridSums {
+  grid::FaceField u, w, weight_u, weight_w;
+};
+
+/// The rest of to_grid after the pass over the particles: the sums are moved into u, w and the
+/// weights (their old storage is left in `sums`, to be reused), reverse-added, divided and
+/// forwarded. to_grid's result exactly, for sums of the same particles.
+void to_grid(GridSums& sums, const grid::Halo& halo, grid::FaceField& u, grid::FaceField& w,
+             grid::FaceField& weight_u, grid::FaceField& weight_w);
+
 /// Particles per cell over owned cells, with the halo made valid. Particles may sit in halo
 /// cells (before migrate): they are counted by their cell's owner. `count` must be a Cell field
 /// of the decomposition behind `halo`; cells are found on particles.spec.
