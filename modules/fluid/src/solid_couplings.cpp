@@ -1,13 +1,12 @@
-// SolidCoupling lists joined over ranks, and the pressure loads J_s p on the solids (eq. 6).
+// SolidCoupling lists joined over ranks, and the pressure loads J_s p on the solids (eq. 6) from
+// the rows the solver kept (RigidBodyTerm::loads).
 #include "solid_couplings.hpp"
 
 #include <sstream>
 
 #include "picdem/core/error.hpp"
 
-namespace picdem::fluid {
-
-namespace detail {
+namespace picdem::fluid::detail {
 
 std::map<std::int64_t, SolidCoupling> gather_couplings(const std::vector<SolidCoupling>& mine,
                                                        const core::Comm& comm) {
@@ -54,11 +53,10 @@ std::map<std::int64_t, SolidCoupling> gather_couplings(const std::vector<SolidCo
 }
 
 std::vector<core::SolidLoads> coupling_loads(const std::map<std::int64_t, SolidCoupling>& joined,
-                                             const grid::CellField& p, const grid::Decomposition& d,
-                                             const CellStates* cells) {
+                                             const grid::CellField& p,
+                                             const grid::Decomposition& d) {
   const grid::GridSpec& g = d.spec();
   const core::IndexBox own = d.owned_cells();
-  constexpr auto kFluid = static_cast<signed char>(grid::CellState::Fluid);
   std::vector<double> sums;
   sums.reserve(3 * joined.size());
   for (const auto& [id, s] : joined) {
@@ -66,7 +64,7 @@ std::vector<core::SolidLoads> coupling_loads(const std::map<std::int64_t, SolidC
     for (std::size_t n = 0; n < s.cells.size(); ++n) {
       const long long c = s.cells[n];
       const int i = static_cast<int>(c % g.nx), k = static_cast<int>(c / g.nx);
-      if (c < 0 || !own.contains(i, k) || (cells && (*cells)(i, k) != kFluid)) continue;
+      if (c < 0 || !own.contains(i, k)) continue;
       // J_s p = - sum_c a_{s,c} p_c  (eq. 6: force and torque of the pressure on the solid)
       for (std::size_t m = 0; m < 3; ++m) f[m] -= s.a[n][m] * p(i, k);
     }
@@ -86,12 +84,4 @@ std::vector<core::SolidLoads> coupling_loads(const std::map<std::int64_t, SolidC
   return loads;
 }
 
-}  // namespace detail
-
-std::vector<core::SolidLoads> pressure_loads(const std::vector<SolidCoupling>& couplings,
-                                             const grid::CellField& p, const CellStates& cells,
-                                             const grid::Decomposition& d) {
-  return detail::coupling_loads(detail::gather_couplings(couplings, d.comm()), p, d, &cells);
-}
-
-}  // namespace picdem::fluid
+}  // namespace picdem::fluid::detail

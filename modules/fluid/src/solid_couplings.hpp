@@ -17,10 +17,10 @@ std::map<std::int64_t, SolidCoupling> gather_couplings(const std::vector<SolidCo
                                                        const core::Comm& comm);
 
 /// J_s p + F_s of every joined coupling (eq. 6): -sum_c a_{s,c} p_c over the listed cells that
-/// this rank owns (and, with `cells`, that are fluid), summed over ranks, plus the joined
-/// SolidCoupling::load. The same vector, ordered by id, on every rank.
+/// this rank owns (the fluid cells: RigidBodyTerm keeps only those), summed over ranks, plus the
+/// joined SolidCoupling::load. The same vector, ordered by id, on every rank.
 std::vector<core::SolidLoads> coupling_loads(const std::map<std::int64_t, SolidCoupling>& joined,
-                                             const grid::CellField& p, const grid::Decomposition& d,
-                                             const CellStates* cells = nullptr);
+                                             const grid::CellField& p,
+                                             const grid::Decomposition& d);
 
 }  // namespace picdem::fluid::detail

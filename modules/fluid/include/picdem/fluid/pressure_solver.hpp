@@ -110,14 +110,6 @@ class PressureSolver {
   std::unique_ptr<Impl> impl_;
 };
 
-/// The pressure force and torque on every solid, J_s p = -sum_c a_{s,c} p_c (eq. 6), summed over
-/// the fluid cells of all ranks, plus SolidCoupling::load; the same vector (ordered by id) on
-/// every rank. Couplings are passed as to PressureSolver::solve; p is the solved pressure. The
-/// same computation as PressureSolver::solid_loads.
-std::vector<core::SolidLoads> pressure_loads(const std::vector<SolidCoupling>& couplings,
-                                             const grid::CellField& p, const CellStates& cells,
-                                             const grid::Decomposition& d);
-
 /// Checks solver/Belos, solver/MueLu and its merged lists with Trilinos' validators, and the
 /// smoother names with Ifpack2's factory, as the first PressureSolver would; throws
 /// core::InputError naming the list. For checks before the run.
