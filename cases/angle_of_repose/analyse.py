@@ -15,10 +15,12 @@ Writes OUT_DIR/angle_of_repose.csv and, with matplotlib, OUT_DIR/angle_of_repose
 usage: analyse.py OUT_DIR [MOUTH_Z]   (MOUTH_Z: the mouth's height, 0.17 m by default; 0.34 for
        cases/angle_of_repose_034)
 """
-import csv
 import math
 import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+import granular_common as gc  # noqa: E402  (solids.csv reader, surface bins, line fits)
 
 XC, MOUTH_Z, D50, FLOOR, BIN = 0.8, 0.17, 0.01, 0.004, 0.01
 BAND = (0.2, 0.8)
@@ -27,47 +29,17 @@ MOVING = 0.05  # m/s: a grain below the mouth faster than this is counted as mov
 MPS_MU, MPS_DEG, MPS_DEM_DEG = 0.1, 22.3, 22.5
 
 
-def frames(path):
-    out = {}
-    with open(path) as f:
-        for r in csv.DictReader(f):
-            out.setdefault(float(r["t"]), []).append(
-                (float(r["x"]), float(r["z"]), math.hypot(float(r["u"]), float(r["w"]))))
-    return out
-
-
 def surface(grains):
     """Top of the deposit per bin (centre + d50/2 - the teeth's tips): grains below the mouth and
     slower than FLIGHT (grains still falling from the slot are not the heap's surface)."""
-    top = {}
-    for x, z, v in grains:
-        if z < MOUTH_Z and v < FLIGHT:
-            k = math.floor(x / BIN)
-            top[k] = max(top.get(k, -1.0), z + D50 / 2 - FLOOR)
-    return top
+    return gc.surface(((x, z + D50 / 2 - FLOOR) for x, z, v in grains
+                       if z < MOUTH_Z and v < FLIGHT), BIN)
 
 
 def flank(top, side):
     """(x, top) of the surface bins of one flank, from the summit outwards (side = -1 or +1)."""
     k_top = max(top, key=lambda k: (top[k], -abs((k + 0.5) * BIN - XC)))
-    h = top[k_top]
-    pts = []
-    k = k_top
-    while k in top:
-        if BAND[0] * h <= top[k] <= BAND[1] * h:
-            pts.append(((k + 0.5) * BIN, top[k]))
-        k += side
-    return pts
-
-
-def slope_deg(pts):
-    if len(pts) < 3:
-        return float("nan")
-    n = len(pts)
-    mx = sum(p[0] for p in pts) / n
-    mz = sum(p[1] for p in pts) / n
-    b = sum((p[0] - mx) * (p[1] - mz) for p in pts) / sum((p[0] - mx) ** 2 for p in pts)
-    return math.degrees(math.atan(abs(b)))
+    return gc.flank(top, k_top, side, BAND, BIN)
 
 
 def angles(grains):
@@ -78,7 +50,7 @@ def angles(grains):
         return dict(left=nan, right=nan, angle=nan, n_left=0, n_right=0, height=0.0, x_min=nan,
                     x_max=nan)
     left, right = flank(top, -1), flank(top, +1)
-    a_l, a_r = slope_deg(left), slope_deg(right)
+    a_l, a_r = gc.slope_deg(left), gc.slope_deg(right)
     xs = [x for x, z, _ in grains if z < MOUTH_Z]
     return dict(left=a_l, right=a_r, angle=(a_l + a_r) / 2, n_left=len(left), n_right=len(right),
                 height=max(top.values()), x_min=min(xs), x_max=max(xs))
@@ -87,10 +59,8 @@ def angles(grains):
 def at_end(path):
     """The measures of one run: the last frame's and 0.2 s before; the fastest grain, the grains
     below the mouth moving faster than MOVING, the grains left in the container."""
-    fr = frames(path)
-    ts = sorted(fr)
-    t_end = ts[-1]
-    t_prev = min(ts, key=lambda t: abs(t - (t_end - 0.2)))
+    fr = gc.frames(path)
+    ts, t_end, t_prev = gc.end_times(fr, 0.2)
     r, prev = angles(fr[t_end]), angles(fr[t_prev])
     r.update(t_end=t_end, angle_prev=prev["angle"], height_prev=prev["height"],
              vmax=max(v for _, _, v in fr[t_end]),
@@ -135,12 +105,8 @@ def main():
 
 
 def plot(rows, out):
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        print("matplotlib not found: no plot")
+    plt = gc.pyplot()
+    if plt is None:
         return
     fig, ax = plt.subplots(1, 2, figsize=(11, 4))
     for mur, style in ((0.0, "ko-"), (0.1, "bs-")):
@@ -156,7 +122,7 @@ def plot(rows, out):
     ax[0].set_ylabel("angle of repose [deg]")
     ax[0].legend(fontsize=7)
     for mu, mur, name, path in runs(out):
-        fr = frames(path)
+        fr = gc.frames(path)
         top = surface(fr[max(fr)])
         ks = sorted(top)
         ax[1].plot([(k + 0.5) * BIN for k in ks], [top[k] for k in ks],

@@ -15,54 +15,35 @@ the end; writes OUT_DIR/collapse.csv and, if
 matplotlib is present, OUT_DIR/granular_column_collapse.png.
 usage: analyse.py OUT_DIR
 """
-import csv
 import math
 import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+import granular_common as gc  # noqa: E402  (solids.csv reader, deposit front, line fits)
 
 WIDTH = {0.5: 0.3033, 1: 0.2145, 2: 0.1517, 4: 0.1072, 8: 0.0758}
 R50, FLOOR, GAP_EJECT = 0.0025, 0.004, 0.018
 
 
 def frames(path):
-    out = {}
-    with open(path) as f:
-        for row in csv.DictReader(f):
-            out.setdefault(float(row["t"]), []).append((float(row["x"]), float(row["z"])))
-    return out
-
-
-def fastest(path, t):
-    """The largest grain speed at output time t [m/s]."""
-    v = 0.0
-    with open(path) as f:
-        for row in csv.DictReader(f):
-            if abs(float(row["t"]) - t) < 1e-9:
-                v = max(v, math.hypot(float(row["u"]), float(row["w"])))
-    return v
+    """solids.csv by output time: {t: [(x, z, speed)]}."""
+    return gc.frames(path)
 
 
 def runout(grains):
-    xs = sorted(x for x, _ in grains)
-    front = xs[0]
-    for x in xs[1:]:
-        if x - front > GAP_EJECT:
-            break
-        front = x
-    return front + R50, sum(1 for x in xs if x > front)
+    front, ejected = gc.front(grains, GAP_EJECT)
+    return front + R50, ejected
 
 
 def height(grains):
-    return max(z for _, z in grains) + R50 - FLOOR
+    return max(z for _, z, _ in grains) + R50 - FLOOR
 
 
 def fit(xs, ys):
-    lx = [math.log(x) for x in xs]
-    ly = [math.log(y) for y in ys]
-    n = len(lx)
-    mx, my = sum(lx) / n, sum(ly) / n
-    b = sum((p - mx) * (q - my) for p, q in zip(lx, ly)) / sum((p - mx) ** 2 for p in lx)
-    return b, math.exp(my - b * mx)
+    """Least squares in log-log: (b, c) of y = c x^b."""
+    b, c = gc.line_fit([(math.log(x), math.log(y)) for x, y in zip(xs, ys)])
+    return b, math.exp(c)
 
 
 def main():
@@ -74,15 +55,14 @@ def main():
             print(f"a = {a_nom:g}: no {path}")
             continue
         fr = frames(path)
-        ts = sorted(fr)
-        t_end = ts[-1]
-        t_prev = min(ts, key=lambda t: abs(t - (t_end - 0.1)))
+        ts, t_end, t_prev = gc.end_times(fr, 0.1)
         h0 = height(fr[ts[0]])
         l_inf, ejected = runout(fr[t_end])
         l_prev, _ = runout(fr[t_prev])
         rows.append(dict(a_nom=a_nom, n=len(fr[ts[0]]), L0=l0, H0=h0, a=h0 / l0, t_end=t_end,
                          L_inf=l_inf, H_inf=height(fr[t_end]), ejected=ejected,
-                         L_prev=l_prev, H_prev=height(fr[t_prev]), vmax=fastest(path, t_end)))
+                         L_prev=l_prev, H_prev=height(fr[t_prev]),
+                         vmax=max(v for _, _, v in fr[t_end])))
     print("a_nom   N     L0      H0      a      t_end  L_inf   (0.1 s before)  H_inf   (before)"
           "  ejected  (L_inf-L0)/L0  H_inf/L0  v_max [m/s]")
     for r in rows:
@@ -109,12 +89,8 @@ def main():
 
 
 def plot(rows, out):
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        print("matplotlib not found: no plot")
+    plt = gc.pyplot()
+    if plt is None:
         return
     a = [r["a"] for r in rows]
     fig, ax = plt.subplots(1, 2, figsize=(10, 4))

@@ -8,19 +8,18 @@ teeth would get one, and it tests every grain near the floor against all its edg
 one obstacle per tooth lets the bounding-box test skip all but the teeth a grain reaches.
 usage: python3 make_teeth.py   (paste the output over the obstacles section of case.yaml)
 """
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+import granular_common as gc  # noqa: E402  (the floor writer)
+
 TANK_L, TOOTH_H, TOOTH_P = 1.5, 0.004, 0.005
-
-
-def fmt(v):
-    return "[" + ", ".join(f"{a:.6g}" for a in v) + "]"
 
 
 def main():
     print("obstacles:")
-    for k in range(round(TANK_L / TOOTH_P)):
-        x0, x1 = k * TOOTH_P, (k + 1) * TOOTH_P
-        print(f"  tooth_{k}:\n    type: polygon\n    x: {fmt([x0, x1, x1, x0 + TOOTH_P / 2, x0])}\n"
-              f"    z: {fmt([0, 0, TOOTH_H / 2, TOOTH_H, TOOTH_H / 2])}")
+    print(gc.teeth_yaml(TANK_L, TOOTH_H, TOOTH_P))
 
 
 if __name__ == "__main__":

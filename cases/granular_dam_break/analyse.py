@@ -15,32 +15,19 @@ Lajeunesse et al. 2005, via Lagree et al. 2011). With matplotlib, writes OUT_DIR
 (snapshots at the times of the paper's Fig. 3b that were output).
 usage: analyse.py OUT_DIR
 """
-import csv
-import math
 import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+import granular_common as gc  # noqa: E402  (solids.csv reader, deposit front, line fits)
 
 L0, R50, FLOOR, GAP_EJECT, BIN, TANK_L = 0.15, 0.005, 0.004, 0.036, 0.01, 0.6
 BAND = (0.2, 0.8)
 
 
-def frames(path):
-    out = {}
-    with open(path) as f:
-        for r in csv.DictReader(f):
-            out.setdefault(float(r["t"]), []).append(
-                (float(r["x"]), float(r["z"]), math.hypot(float(r["u"]), float(r["w"]))))
-    return out
-
-
 def front(grains):
-    xs = sorted(x for x, _, _ in grains)
-    f = xs[0]
-    for x in xs[1:]:
-        if x - f > GAP_EJECT:
-            break
-        f = x
-    return min(f + R50, TANK_L), sum(1 for x in xs if x > f)
+    f, ejected = gc.front(grains, GAP_EJECT)
+    return min(f + R50, TANK_L), ejected
 
 
 def top(grains):
@@ -48,30 +35,15 @@ def top(grains):
 
 
 def slope_deg(grains):
-    surf = {}
-    for x, z, _ in grains:
-        k = math.floor(x / BIN)
-        surf[k] = max(surf.get(k, -1.0), z + R50 - FLOOR)
+    surf = gc.surface(((x, z + R50 - FLOOR) for x, z, _ in grains), BIN)
     k = max(surf, key=lambda j: (surf[j], -j))
-    h = surf[k]
-    pts = []
-    while k in surf:
-        if BAND[0] * h <= surf[k] <= BAND[1] * h:
-            pts.append(((k + 0.5) * BIN, surf[k]))
-        k += 1
-    if len(pts) < 3:
-        return float("nan"), len(pts)
-    n = len(pts)
-    mx, mz = sum(p[0] for p in pts) / n, sum(p[1] for p in pts) / n
-    b = sum((p[0] - mx) * (p[1] - mz) for p in pts) / sum((p[0] - mx) ** 2 for p in pts)
-    return math.degrees(math.atan(abs(b))), n
+    pts = gc.flank(surf, k, +1, BAND, BIN)
+    return gc.slope_deg(pts), len(pts)
 
 
 def at_end(path):
-    fr = frames(path)
-    ts = sorted(fr)
-    t_end = ts[-1]
-    t_prev = min(ts, key=lambda t: abs(t - (t_end - 0.1)))
+    fr = gc.frames(path)
+    ts, t_end, t_prev = gc.end_times(fr, 0.1)
     h0 = top(fr[ts[0]])
     l_inf, ejected = front(fr[t_end])
     ang, npts = slope_deg(fr[t_end])
@@ -103,14 +75,10 @@ def main():
 
 
 def plot(path, out):
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        print("matplotlib not found: no plot")
+    plt = gc.pyplot()
+    if plt is None:
         return
-    fr = frames(path)
+    fr = gc.frames(path)
     want = [0.0, 0.2, 0.4, 0.6, 1.0, max(fr)]
     fig, ax = plt.subplots(1, len(want), figsize=(2.6 * len(want), 2.6))
     for a, t in zip(ax, want):

@@ -13,23 +13,15 @@ landing place found: with the generator's default (8) the pour is loose (a solid
 tries give about 0.79, a settled random packing (doc/validation.md, "Granular column collapse").
 Rerun after changing a constant: python3 make_case.py > case.yaml
 """
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+import granular_common as gc  # noqa: E402  (the floor writer)
+
 TANK_L, TANK_H = 0.6, 0.6
 TOOTH_H, TOOTH_P = 0.004, 0.01
 COL_L, N_GRAINS, DROPS, T_END = 0.15, 300, 512, 1.5
-
-
-def fmt(v):
-    return "[" + ", ".join(f"{a:.6g}" for a in v) + "]"
-
-
-def teeth_yaml():
-    out = []
-    for k in range(round(TANK_L / TOOTH_P)):
-        x0, x1 = k * TOOTH_P, (k + 1) * TOOTH_P
-        x = [x0, x1, x1, x0 + TOOTH_P / 2, x0]
-        z = [0.0, 0.0, TOOTH_H / 2, TOOTH_H, TOOTH_H / 2]
-        out.append(f"  tooth_{k}:\n    type: polygon\n    x: {fmt(x)}\n    z: {fmt(z)}")
-    return "\n".join(out)
 
 
 def main():
@@ -39,40 +31,13 @@ def main():
 # {N_GRAINS} disks, d from 8 to 12 mm (uniform in ln d by number, d50 = 10 mm), density 2500, poured
 # (placement pour, {DROPS} tries per grain: a settled packing) into the column's box. Floor: teeth
 # {TOOTH_H * 1000:g} mm high every {TOOTH_P * 1000:g} mm, one obstacle each. Dry: no water section.
-case:
-  name: granular_dam_break
-grid:
-  length: {TANK_L}
-  height: {TANK_H}
-  cell_size: 0.002
-time:
-  end: {T_END}
-  dt_max: 0.0001
-output:
-  interval: 0.05
-  paraview: false
-  png: false
-  directory: out_granular_dam_break
-dem:
-  mu: 0.2
-  tangential_model: accumulated
-  gap_cells: 1
-  theta: 0.002
+{gc.head_yaml("granular_dam_break", TANK_L, TANK_H, T_END,
+             [("mu", 0.2), ("tangential_model", "accumulated")])}
 obstacles:
-{teeth_yaml()}
+{gc.teeth_yaml(TANK_L, TOOTH_H, TOOTH_P)}
 solids:
-  grains:
-    type: graded_packing
-    density: 2500
-    region: [0, {TOOTH_H:g}, {COL_L:g}, {TANK_H:g}]
-    placement: pour
-    drops: {DROPS}
-    count: {N_GRAINS}
-    basis: number
-    d_min: 0.008
-    d50: 0.01
-    d_max: 0.012
-    seed: 1""")
+{gc.graded_yaml("grains", 2500, [0, TOOTH_H, COL_L, TANK_H], "pour", N_GRAINS,
+                (0.008, 0.01, 0.012), 1, drops=DROPS)}""")
 
 
 if __name__ == "__main__":

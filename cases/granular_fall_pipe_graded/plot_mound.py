@@ -6,21 +6,18 @@ are drawn as dots (d from 5 to 15 mm). Prints the mound's extent (leftmost and r
 the highest centre, the stones' mean centre and the fastest stone; draws OUT_DIR/mound.png.
 usage: plot_mound.py OUT_DIR
 """
-import csv
-import math
 import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+import granular_common as gc  # noqa: E402  (solids.csv reader)
 
 PIPE_X, PIPE_W, WALL, BOTTOM, TOP, FUNNEL_W, FUNNEL_H = 0.2145, 0.045, 0.0045, 0.09, 0.195, 0.135, 0.09
 
 
 def main():
     out = sys.argv[1]
-    frames = {}
-    with open(os.path.join(out, "solids.csv")) as f:
-        for r in csv.DictReader(f):
-            frames.setdefault(float(r["t"]), []).append(
-                (float(r["x"]), float(r["z"]), math.hypot(float(r["u"]), float(r["w"]))))
+    frames = gc.frames(os.path.join(out, "solids.csv"))
     t = max(frames)
     g = frames[t]
     xs, zs = [p[0] for p in g], [p[1] for p in g]
@@ -28,12 +25,8 @@ def main():
           f"highest centre z = {max(zs):.4f} m, mean centre ({sum(xs) / len(xs):.4f}, "
           f"{sum(zs) / len(zs):.4f}) m, fastest {max(p[2] for p in g):.3f} m/s; "
           f"{sum(1 for z in zs if z > BOTTOM)} above the pipe's lower end")
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        print("matplotlib not found: no plot")
+    plt = gc.pyplot()
+    if plt is None:
         return
     fig, ax = plt.subplots(figsize=(6, 4))
     ax.scatter(xs, zs, s=12, color="k", label=f"stone centres, t = {t:.2f} s")

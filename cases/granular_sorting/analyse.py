@@ -12,9 +12,11 @@ heap's grains (ranked by height).
 Writes OUT_DIR/sorting.csv and, with matplotlib, OUT_DIR/granular_sorting.png.
 usage: analyse.py OUT_DIR
 """
-import csv
 import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+import granular_common as gc  # noqa: E402  (solids.csv reader)
 
 DENSITIES, PER_LAYER, LAYERS = (1500, 2500, 3500), 50, 6
 MOUTH_Z, FLOOR, XC, BIN = 0.17, 0.004, 0.8, 0.01
@@ -43,16 +45,6 @@ def read_layers(out):
 
 def population(i):
     return DENSITIES.index(LAYER_DENSITY[i // PER_LAYER])
-
-
-def frames(path):
-    out = {}
-    with open(path) as f:
-        for r in csv.DictReader(f):
-            v = (float(r["u"]) ** 2 + float(r["w"]) ** 2) ** 0.5
-            out.setdefault(float(r["t"]), []).append(
-                (int(r["id"]), float(r["x"]), float(r["z"]), v))
-    return out
 
 
 def measures(grains):
@@ -86,7 +78,7 @@ def measures(grains):
 
 
 def at_end(path):
-    fr = frames(path)
+    fr = gc.frames(path, ids=True)
     ts = sorted(fr)
     m = measures(fr[ts[-1]])
     m["t_end"] = ts[-1]
@@ -116,14 +108,10 @@ def main():
 
 
 def plot(path, m, out):
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
-        print("matplotlib not found: no plot")
+    plt = gc.pyplot()
+    if plt is None:
         return
-    fr = frames(path)
+    fr = gc.frames(path, ids=True)
     last = fr[max(fr)]
     fig, ax = plt.subplots(1, 2, figsize=(11, 3.8))
     colors = ("tab:orange", "tab:green", "tab:blue")

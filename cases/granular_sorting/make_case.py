@@ -16,8 +16,10 @@ Rerun after changing a constant: python3 make_case.py [reversed] > case.yaml
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..",
-                                "angle_of_repose"))
+here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(here, ".."))
+sys.path.insert(0, os.path.join(here, "..", "angle_of_repose"))
+import granular_common as gc  # noqa: E402  (the floor and container writers)
 import make_case as repose  # noqa: E402  (the cargo-dump geometry)
 
 DENSITIES = (1500, 2500, 3500)
@@ -27,57 +29,24 @@ PER_LAYER, LAYER_H, T_END, MU = 50, 0.07, 2.5, 0.2
 def main():
     order = DENSITIES[::-1] if len(sys.argv) > 1 and sys.argv[1] == "reversed" else DENSITIES
     xc, mouth = repose.TANK_L / 2, repose.MOUTH_Z
-    (lx, lz), (rx, rz) = repose.containers(xc, mouth)
     x0, x1 = xc - repose.BOX_W / 2, xc + repose.BOX_W / 2
     z = mouth + repose.WALL_T
     layers = []
     for k in range(6):
         rho = order[k % 3]
-        layers.append(f"""  layer_{k}:
-    type: graded_packing
-    density: {rho}
-    region: [{x0:.6g}, {z + k * LAYER_H:.6g}, {x1:.6g}, {z + (k + 1) * LAYER_H:.6g}]
-    placement: box
-    count: {PER_LAYER}
-    basis: number
-    d_min: 0.009
-    d50: 0.01
-    d_max: 0.011
-    seed: {k + 1}""")
+        layers.append(gc.graded_yaml(
+            f"layer_{k}", rho, [x0, z + k * LAYER_H, x1, z + (k + 1) * LAYER_H], "box", PER_LAYER,
+            (0.009, 0.01, 0.011), k + 1))
     print(f"""# Gravity sorting (segregated lamination) of grains of three densities (Kim et al. 2018, sec. 5),
 # dry, in 2D. Written by make_case.py - edit that script, not this file. README.md says more.
 # {6 * PER_LAYER} disks, d from 9 to 11 mm, densities {order[0]}, {order[1]}, {order[2]}, {order[0]}, {order[1]}, {order[2]} in six
 # layers from the bottom, in the cargo-dump container of
 # cases/angle_of_repose (slot 0.07 m wide, mouth {mouth:g} m above the toothed floor); they run out at t = 0.
-case:
-  name: granular_sorting
-grid:
-  length: {repose.TANK_L}
-  height: {repose.TANK_H}
-  cell_size: 0.002
-time:
-  end: {T_END}
-  dt_max: 0.0001
-output:
-  interval: 0.05
-  paraview: false
-  png: false
-  directory: out_granular_sorting
-dem:
-  mu: {MU}
-  tangential_model: accumulated
-  gap_cells: 1
-  theta: 0.002
+{gc.head_yaml("granular_sorting", repose.TANK_L, repose.TANK_H, T_END,
+             [("mu", MU), ("tangential_model", "accumulated")])}
 obstacles:
-{repose.teeth_yaml()}
-  container_left:
-    type: polygon
-    x: {repose.fmt(lx)}
-    z: {repose.fmt(lz)}
-  container_right:
-    type: polygon
-    x: {repose.fmt(rx)}
-    z: {repose.fmt(rz)}
+{gc.teeth_yaml(repose.TANK_L, repose.TOOTH_H, repose.TOOTH_P)}
+{gc.containers_yaml(*repose.containers(xc, mouth))}
 solids:
 {chr(10).join(layers)}""")
 

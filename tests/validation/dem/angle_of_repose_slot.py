@@ -17,9 +17,9 @@ case's analyse.py (a least-squares line through each flank of the final heap):
 usage: angle_of_repose_slot.py PICDEM SOURCE_DIR WORK_DIR
 """
 import os
-import shutil
-import subprocess
 import sys
+
+import case_check
 
 MU, MUR = 0.1, 0.0
 BAND = (8.4 - 1.5, 8.4 + 1.5)
@@ -31,16 +31,11 @@ MIN_POINTS = 10
 def main():
     picdem, source, work = sys.argv[1:4]
     case_dir = os.path.join(source, "cases", "angle_of_repose")
-    out = os.path.join(work, f"mu{MU}_mur{MUR}")
-    shutil.rmtree(out, ignore_errors=True)
-    os.makedirs(work, exist_ok=True)
+    out = case_check.fresh(work, f"mu{MU}_mur{MUR}")
     cmd = [picdem, os.path.join(case_dir, "case.yaml"), "--output", out, "--set", f"dem/mu={MU}",
            "--set", f"dem/rolling_resistance={MUR}", "--set", "checkpoint/at_end=false"]
-    r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    if r.returncode != 0:
-        sys.exit(f"FAIL: {' '.join(cmd)} exited {r.returncode}:\n{r.stdout[-3000:]}")
-    sys.path.insert(0, case_dir)
-    import analyse
+    case_check.run(cmd)
+    analyse = case_check.case_module(case_dir)
     m = analyse.at_end(os.path.join(out, "solids.csv"))
     print(f"cases/angle_of_repose (300 disks, d 8-12 mm, grid 2 mm, gap 2 mm, 1 rank), mu = {MU}, "
           f"mu_r = {MUR}, t = {m['t_end']:.2f} s: flanks {m['left']:.2f} and {m['right']:.2f} deg "
@@ -60,9 +55,7 @@ def main():
         failures.append(f"flanks differ by more than {SYMMETRY_DEG} deg under a centred slot")
     if not BAND[0] <= m["angle"] <= BAND[1]:
         failures.append(f"angle {m['angle']:.2f} deg outside {BAND[0]:.1f}..{BAND[1]:.1f} deg")
-    if failures:
-        sys.exit("FAIL: " + "; ".join(failures))
-    print("PASS")
+    case_check.verdict(failures)
 
 
 if __name__ == "__main__":

@@ -21,9 +21,9 @@ the case's analyse.py:
 usage: column_collapse_small.py PICDEM SOURCE_DIR WORK_DIR
 """
 import os
-import shutil
-import subprocess
 import sys
+
+import case_check
 
 L0, COUNT, DROPS, T_END = 0.1228, 400, 512, 1.0
 HEIGHT_TOL = 0.10  # relative; chosen, not a published scatter
@@ -43,19 +43,14 @@ def height_rods(a):
 def main():
     picdem, source, work = sys.argv[1:4]
     case_dir = os.path.join(source, "cases", "granular_column_collapse")
-    out = os.path.join(work, "a1_n400")
-    shutil.rmtree(out, ignore_errors=True)
-    os.makedirs(work, exist_ok=True)
+    out = case_check.fresh(work, "a1_n400")
     cmd = [picdem, os.path.join(case_dir, "case.yaml"), "--output", out,
            "--set", f"time/end={T_END}", "--set", f"solids/grains/count={COUNT}",
            "--set", f"solids/grains/drops={DROPS}",
            "--set", f"solids/grains/region=[0, 0.006, {L0}, 0.8]",
            "--set", "dem/tangential_model=accumulated", "--set", "checkpoint/at_end=false"]
-    r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    if r.returncode != 0:
-        sys.exit(f"FAIL: {' '.join(cmd)} exited {r.returncode}:\n{r.stdout[-3000:]}")
-    sys.path.insert(0, case_dir)
-    import analyse
+    case_check.run(cmd)
+    analyse = case_check.case_module(case_dir)
     fr = analyse.frames(os.path.join(out, "solids.csv"))
     ts = sorted(fr)
     t_end = ts[-1]
@@ -82,9 +77,7 @@ def main():
         failures.append(f"runout {run:.3f} outside {band[0]:.3f}..{band[1]:.3f}")
     if abs(h_inf / h0 - h_ref) > HEIGHT_TOL * h_ref:
         failures.append(f"height {h_inf / h0:.3f} H0 not within {HEIGHT_TOL:.0%} of {h_ref:.3f}")
-    if failures:
-        sys.exit("FAIL: " + "; ".join(failures))
-    print("PASS")
+    case_check.verdict(failures)
 
 
 if __name__ == "__main__":

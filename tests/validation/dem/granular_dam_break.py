@@ -17,37 +17,27 @@ usage: granular_dam_break.py PICDEM SOURCE_DIR WORK_DIR
 """
 import csv
 import os
-import shutil
-import subprocess
 import sys
 
+import case_check
+
 WATER_BY, WALL, REST, STILL_DEPTH = 0.4, 0.595, 0.0025, 0.075
-
-
-def run(cmd):
-    r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    if r.returncode != 0:
-        sys.exit(f"FAIL: {' '.join(cmd)} exited {r.returncode}:\n{r.stdout[-3000:]}")
 
 
 def main():
     picdem, source, work = sys.argv[1:4]
     case_dir = os.path.join(source, "cases", "granular_dam_break")
-    water, grains = os.path.join(work, "water"), os.path.join(work, "grains")
-    for d in (water, grains):
-        shutil.rmtree(d, ignore_errors=True)
-    os.makedirs(work, exist_ok=True)
-    run([picdem, os.path.join(case_dir, "water.yaml"), "--output", water, "--set", "time/end=0.5",
+    water, grains = case_check.fresh(work, "water"), case_check.fresh(work, "grains")
+    case_check.run([picdem, os.path.join(case_dir, "water.yaml"), "--output", water, "--set", "time/end=0.5",
          "--set", "checkpoint/at_end=false"])
-    run([picdem, os.path.join(case_dir, "case.yaml"), "--output", grains,
+    case_check.run([picdem, os.path.join(case_dir, "case.yaml"), "--output", grains,
          "--set", "checkpoint/at_end=false"])
     t_water = None
     with open(os.path.join(water, "timeseries.csv")) as f:
         for r in csv.DictReader(f):
             if t_water is None and float(r["front_x"]) >= WALL:
                 t_water = float(r["t"])
-    sys.path.insert(0, case_dir)
-    import analyse
+    analyse = case_check.case_module(case_dir)
     m = analyse.at_end(os.path.join(grains, "solids.csv"))
     t_grains = next((t for t, f, _ in m["series"] if f >= WALL), None)
     print(f"cases/granular_dam_break: water (5 mm cells, 1 rank) at the far wall at t = {t_water} s "
@@ -65,9 +55,7 @@ def main():
     if not STILL_DEPTH < m["H_inf"] < m["H0"]:
         failures.append(f"deposit top {m['H_inf']:.4f} m not between the water's still depth "
                         f"{STILL_DEPTH} m and the column's height {m['H0']:.4f} m")
-    if failures:
-        sys.exit("FAIL: " + "; ".join(failures))
-    print("PASS")
+    case_check.verdict(failures)
 
 
 if __name__ == "__main__":

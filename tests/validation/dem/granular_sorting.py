@@ -18,9 +18,9 @@ through the `picdem` executable on one rank; from its solids.csv, with the case'
 usage: granular_sorting.py PICDEM SOURCE_DIR WORK_DIR
 """
 import os
-import shutil
-import subprocess
 import sys
+
+import case_check
 
 MIN_SEPARATION = 0.005  # m
 MAX_LEFT = 10
@@ -29,16 +29,11 @@ MAX_LEFT = 10
 def main():
     picdem, source, work = sys.argv[1:4]
     case_dir = os.path.join(source, "cases", "granular_sorting")
-    out = os.path.join(work, "sorting")
-    shutil.rmtree(out, ignore_errors=True)
-    os.makedirs(work, exist_ok=True)
+    out = case_check.fresh(work, "sorting")
     cmd = [picdem, os.path.join(case_dir, "case.yaml"), "--output", out,
            "--set", "checkpoint/at_end=false"]
-    r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    if r.returncode != 0:
-        sys.exit(f"FAIL: {' '.join(cmd)} exited {r.returncode}:\n{r.stdout[-3000:]}")
-    sys.path.insert(0, case_dir)
-    import analyse
+    case_check.run(cmd)
+    analyse = case_check.case_module(case_dir)
     analyse.read_layers(out)
     m = analyse.at_end(os.path.join(out, "solids.csv"))
     flying = sum(m["n"]) + m["in_container"]
@@ -60,9 +55,7 @@ def main():
     if heavy - medium < MIN_SEPARATION:
         failures.append(f"heavy grains lie {(heavy - medium) * 1000:.1f} mm deeper than the medium "
                         f"ones (at least {MIN_SEPARATION * 1000:.0f} mm)")
-    if failures:
-        sys.exit("FAIL: " + "; ".join(failures))
-    print("PASS")
+    case_check.verdict(failures)
 
 
 if __name__ == "__main__":
