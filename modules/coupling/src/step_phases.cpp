@@ -9,10 +9,13 @@
 #include "open_particles.hpp"
 #include "picdem/core/error.hpp"
 #include "picdem/core/timer.hpp"
+#include "picdem/dem/figures.hpp"
+#include "picdem/dem/gap_damping.hpp"
 #include "picdem/fluid/bodies.hpp"
 #include "picdem/fluid/free_surface.hpp"
 #include "picdem/fluid/open_flow.hpp"
 #include "picdem/fluid/viscous.hpp"
+#include "picdem/particles/figures.hpp"
 #include "picdem/particles/occupancy.hpp"
 #include "picdem/particles/particles.hpp"
 #include "viscous_bodies.hpp"
@@ -51,25 +54,10 @@ StepSettings step_settings_from(const core::Params& params) {
   return s;
 }
 
-double max_particle_speed(const particles::ParticleSet& P, const core::Comm& comm) {
-  double vmax = 0.0;
-  for (std::size_t n = 0; n < P.x.size(); ++n)
-    vmax = std::max(vmax, std::sqrt(P.u[n] * P.u[n] + P.w[n] * P.w[n]));
-  return comm.max(vmax);
-}
-
-double max_solid_speed(const dem::DemSolver* dem, const core::Comm& comm) {
-  double vmax = 0.0;
-  if (dem)
-    for (const auto& s : dem->owned())
-      vmax = std::max(vmax, std::sqrt(s.v.x * s.v.x + s.v.z * s.v.z) +
-                                std::abs(s.omega) * dem->shape_of(s.id)->bounding_radius());
-  return comm.max(vmax);
-}
-
 double cfl_extra_speed(const StepSettings& set, const particles::ParticleSet& particles,
                        const dem::DemSolver* dem, const core::Comm& comm) {
-  return set.cfl_from_particles ? max_particle_speed(particles, comm) : max_solid_speed(dem, comm);
+  if (set.cfl_from_particles) return particles::max_speed(particles, comm);
+  return dem ? dem::max_surface_speed(*dem, comm) : 0.0;  // dem: on every rank or on none
 }
 
 double choose_time_step(const StepSettings& set, double t, long long step,
@@ -263,7 +251,7 @@ void grid_to_particles(const Layout& L, const StepSettings& set, const SolidsAtS
   if (set.has_bodies) fluid::rigid_faces_into_flip_base(set.spec, f);
   particles::from_grid(particles, set.particles, f.u_old, f.w_old, f.u, f.w, set.spec);
   if (dem && set.beta < 1.0)
-    damp_gap_particles(particles, all_contacts(*dem, L.comm), set.spec.h, set.beta);
+    damp_gap_particles(particles, dem::all_contacts(*dem, L.comm), set.spec.h, set.beta);
 }
 
 namespace {
@@ -392,31 +380,19 @@ Diagnostics record_diagnostics(const Layout& L, const StepSettings& set, double 
   g.ppe_iterations = solve.iterations;
   g.ppe_residual = solve.relative_residual;
   g.ppe_structure_reused = solve.reused_structure;
-  double ke = 0.0, front = -std::numeric_limits<double>::infinity(), vmax = 0.0;
-  bool finite = true;
-  for (std::size_t n = 0; n < P.x.size(); ++n) {
-    const double v2 = P.u[n] * P.u[n] + P.w[n] * P.w[n];
-    ke += 0.5 * set.particle_mass * v2;
-    front = std::max(front, P.x[n]);
-    vmax = std::max(vmax, std::sqrt(v2));
-    finite = finite && std::isfinite(v2) && std::isfinite(P.x[n]) && std::isfinite(P.z[n]);
-  }
-  double ke_solids = 0.0;
-  if (dem)
-    for (const auto& st : dem->owned()) {
-      ke_solids += 0.5 * st.mass * core::norm2(st.v) + 0.5 * st.inertia * st.omega * st.omega;
-      finite = finite && std::isfinite(st.x.x) && std::isfinite(st.x.z) && std::isfinite(st.v.x);
-    }
+  const auto mine = particles::local_figures(P, set.particle_mass);
+  const auto solid = dem ? dem::owned_figures(*dem, set.solid_count_box) : dem::OwnedFigures{};
+  const bool finite = mine.finite && solid.finite;
   if (comm.any(!finite)) {
     std::ostringstream m;
     m << "step " << step << " at t = " << t
       << " s: a particle or solid has a non-finite position or velocity: the run has blown up";
     throw core::SolverError(m.str());
   }
-  g.kinetic_energy = comm.sum(ke);
-  g.solid_kinetic_energy = comm.sum(ke_solids);
-  g.front_x = fluid ? comm.max(front) - set.spec.origin.x : 0.0;
-  g.max_speed = comm.max(vmax);
+  g.kinetic_energy = comm.sum(mine.kinetic_energy);
+  g.solid_kinetic_energy = comm.sum(solid.kinetic_energy);
+  g.front_x = fluid ? comm.max(mine.front) - set.spec.origin.x : 0.0;
+  g.max_speed = comm.max(mine.max_speed);
   g.particles = comm.sum(static_cast<long long>(P.x.size()));
   if (fluid) {
     // S of the particles where the step leaves them: kept for the next step's cells
@@ -429,12 +405,7 @@ Diagnostics record_diagnostics(const Layout& L, const StepSettings& set, double 
   }
   for (double x : set.level_probes)
     g.levels.push_back(fluid ? fluid->surface_height(x) : std::nan(""));
-  const auto& box = set.solid_count_box;
-  long long inside = 0;
-  if (dem && box.size() == 4)
-    for (const auto& st : dem->owned())
-      inside += st.x.x >= box[0] && st.x.x <= box[1] && st.x.z >= box[2] && st.x.z <= box[3];
-  g.solids_in_box = comm.sum(inside);
+  g.solids_in_box = comm.sum(solid.in_box);
   return g;
 }
 

@@ -73,15 +73,9 @@ struct ParticleOccupancy {
   bool sums_current = false;
 };
 
-/// Collective: the largest particle speed |v| over all ranks (0 without particles).
-double max_particle_speed(const particles::ParticleSet& particles, const core::Comm& comm);
-
-/// Collective: the largest surface speed |v| + |omega| R of the solids (R the bounding radius)
-/// over all ranks; 0 without solids.
-double max_solid_speed(const dem::DemSolver* dem, const core::Comm& comm);
-
 /// The speed besides the grid's face velocities that bounds the step (time/cfl_speed): the
-/// particles' fastest speed, or the solids' fastest surface speed. Collective.
+/// particles' fastest speed (particles::max_speed), or the solids' fastest surface speed
+/// (dem::max_surface_speed). Collective.
 double cfl_extra_speed(const StepSettings& set, const particles::ParticleSet& particles,
                        const dem::DemSolver* dem, const core::Comm& comm);
 

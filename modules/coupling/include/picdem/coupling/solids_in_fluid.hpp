@@ -48,14 +48,10 @@ class SolidLocator : public geometry::BodyLocator {
 };
 using geometry::push_out;
 
-/// Eq. 20: particles in the band of an active contact (4h along the tangent, centred at the
-/// contact point, h either side of it along the normal) have their velocity scaled by C, linear
-/// from 1 at the band's ends to beta at the contact point. Contacts are gathered from all ranks.
-/// Returns the number of particles damped on this rank.
+/// Eq. 20: the particles' velocities (and APIC matrices) scaled by the gap damping factor C of
+/// `contacts` (dem::GapDamping: the bands of the active contacts, gathered from all ranks by
+/// dem::all_contacts). Returns the number of particles damped on this rank.
 long long damp_gap_particles(particles::ParticleSet& ps, const std::vector<dem::Contact>& contacts,
                              double h, double beta);
-
-/// Every rank's active contacts, on every rank, in a fixed order.
-std::vector<dem::Contact> all_contacts(const dem::DemSolver& dem, const core::Comm& comm);
 
 }  // namespace picdem::coupling

@@ -1,0 +1,28 @@
+#include "picdem/dem/figures.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace picdem::dem {
+
+double max_surface_speed(const DemSolver& dem, const core::Comm& comm) {
+  double vmax = 0.0;
+  for (const auto& s : dem.owned())
+    vmax = std::max(vmax, std::sqrt(s.v.x * s.v.x + s.v.z * s.v.z) +
+                              std::abs(s.omega) * dem.shape_of(s.id)->bounding_radius());
+  return comm.max(vmax);
+}
+
+OwnedFigures owned_figures(const DemSolver& dem, const std::vector<double>& box) {
+  OwnedFigures f;
+  for (const auto& st : dem.owned()) {
+    f.kinetic_energy += 0.5 * st.mass * core::norm2(st.v) + 0.5 * st.inertia * st.omega * st.omega;
+    f.finite = f.finite && std::isfinite(st.x.x) && std::isfinite(st.x.z) && std::isfinite(st.v.x);
+  }
+  if (box.size() == 4)
+    for (const auto& st : dem.owned())
+      f.in_box += st.x.x >= box[0] && st.x.x <= box[1] && st.x.z >= box[2] && st.x.z <= box[3];
+  return f;
+}
+
+}  // namespace picdem::dem
