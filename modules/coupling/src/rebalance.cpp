@@ -38,19 +38,7 @@ void move_to_cuts(const MovableState& s, const grid::Cuts& cuts) {
   const grid::Decomposition from = s.d;
   s.d.set_cuts(cuts.xs, cuts.zs);
   s.halo = std::make_unique<grid::Halo>(s.d);
-  if (s.fluid) {
-    fluid::FluidState moved(s.d);
-    const fluid::FluidState& old = *s.fluid;
-    // for_each_saved visits the same fields in the same order on both
-    std::vector<const void*> sources;
-    old.for_each_saved([&](const char*, const auto& f) { sources.push_back(&f); });
-    std::size_t n = 0;
-    moved.for_each_saved([&](const char*, auto& f) {
-      using A = std::decay_t<decltype(f)>;
-      f = grid::redistributed(*static_cast<const A*>(sources[n++]), from, s.d);
-    });
-    *s.fluid = std::move(moved);
-  }
+  if (s.fluid) *s.fluid = fluid::redistributed(*s.fluid, from, s.d);
   particles::migrate(s.particles, s.d);
   if (s.dem) s.dem->set_regions(rank_regions(s.d));
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "picdem/dem/gap_damping.hpp"
+#include "picdem/fluid/bodies.hpp"
 
 namespace picdem::coupling {
 
@@ -45,15 +46,7 @@ geometry::CutCells cut_cells(const SolidScene& scene, const grid::Decomposition&
   geometry::CutCellOptions options;
   options.tiny_fraction = tiny_fraction;
   auto cut = geometry::build_cut_cells(window, scene.placements, scene.obstacles, options);
-  apertures = fluid::open_apertures(d);
-  const auto bu = apertures.E_x.storage();
-  for (int k = bu.k0; k < bu.k1; ++k)
-    for (int i = bu.i0; i < bu.i1; ++i)
-      apertures.E_x(i, k) = std::min(apertures.E_x(i, k), cut.E_x(i, k));
-  const auto bw = apertures.E_z.storage();
-  for (int k = bw.k0; k < bw.k1; ++k)
-    for (int i = bw.i0; i < bw.i1; ++i)
-      apertures.E_z(i, k) = std::min(apertures.E_z(i, k), cut.E_z(i, k));
+  apertures = fluid::body_apertures(cut, d);
   return cut;
 }
 

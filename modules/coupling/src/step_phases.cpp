@@ -139,22 +139,6 @@ void mark_cells(const Layout& L, const StepSettings& set, const geometry::CutCel
     fluid::open_surface_fractions(fluid.surface, set.fluid.open, L.d);
 }
 
-namespace {
-
-// Faces carrying fluid velocity (open, next to a fluid cell), plus faces closed by a body, which
-// carry its rigid velocity (motions: of the cut cells' bodies); then velocities are extended into
-// the rest. `mask`: recompute the fluid-face mask (else the one of the last call is kept: cells
-// and apertures unchanged since, and the covered faces are the same).
-void extend(const Layout& L, const StepSettings& set, const std::vector<core::SolidState>& motions,
-            const geometry::CutCells& cut, bool mask, fluid::FluidState& f) {
-  if (mask) fluid::fluid_faces(f.cells, f.apertures, f.u_valid, f.w_valid);
-  if (set.has_bodies)
-    fluid::rigid_face_velocities(motions, cut, f.apertures, L.d, f.u, f.w, f.u_valid, f.w_valid);
-  fluid::extend_velocity(f.u, f.w, f.u_valid, f.w_valid, L.d.halo(), L.halo);
-}
-
-}  // namespace
-
 // u~ before forces is kept for the FLIP increment.
 void particles_to_grid(const Layout& L, const StepSettings& set, const SolidsAtStart& solids,
                        const particles::ParticleSet& particles, ParticleOccupancy& occ,
@@ -166,7 +150,8 @@ void particles_to_grid(const Layout& L, const StepSettings& set, const SolidsAtS
     particles::to_grid(particles, L.d, L.halo, set.particles, f.u, f.w, f.weight_u, f.weight_w);
   occ.sums_current = false;
   fluid::enforce_walls(f.u, f.w, set.fluid, L.d);
-  extend(L, set, solids.scene.states, solids.cut, true, f);
+  const geometry::CutCells* cut = set.has_bodies ? &solids.cut : nullptr;
+  fluid::extend_around_fluid(solids.scene.states, cut, L.d, L.halo, true, f);
   f.u_old = f.u, f.w_old = f.w;
 }
 
@@ -246,7 +231,10 @@ void grid_to_particles(const Layout& L, const StepSettings& set, const SolidsAtS
                        const SolidScene& after, const dem::DemSolver* dem, fluid::FluidState& f,
                        particles::ParticleSet& particles) {
   core::ScopedTimer timer("transfer: grid to particles");
-  extend(L, set, motions_at(solids.scene, after), solids.cut, false, f);
+  // the faces closed by bodies at X^n carry their velocities at X^{n+1}; the fluid-face mask of
+  // P2G is kept (cells and apertures unchanged since)
+  const geometry::CutCells* cut = set.has_bodies ? &solids.cut : nullptr;
+  fluid::extend_around_fluid(motions_at(solids.scene, after), cut, L.d, L.halo, false, f);
   fluid::enforce_walls(f.u, f.w, set.fluid, L.d);
   if (set.has_bodies) fluid::rigid_faces_into_flip_base(set.spec, f);
   particles::from_grid(particles, set.particles, f.u_old, f.w_old, f.u, f.w, set.spec);

@@ -1,5 +1,6 @@
 #include "picdem/fluid/bodies.hpp"
 
+#include <algorithm>
 #include <utility>
 
 #include "picdem/fluid/free_surface.hpp"
@@ -92,6 +93,17 @@ void wet_enclosed_cut_cells(const grid::Decomposition& d, const geometry::CutCel
     }
 }
 
+Apertures body_apertures(const geometry::CutCells& cut, const grid::Decomposition& d) {
+  Apertures E = open_apertures(d);
+  const auto bu = E.E_x.storage();
+  for (int k = bu.k0; k < bu.k1; ++k)
+    for (int i = bu.i0; i < bu.i1; ++i) E.E_x(i, k) = std::min(E.E_x(i, k), cut.E_x(i, k));
+  const auto bw = E.E_z.storage();
+  for (int k = bw.k0; k < bw.k1; ++k)
+    for (int i = bw.i0; i < bw.i1; ++i) E.E_z(i, k) = std::min(E.E_z(i, k), cut.E_z(i, k));
+  return E;
+}
+
 void rigid_face_velocities(const std::vector<core::SolidState>& bodies,
                            const geometry::CutCells& cut, const Apertures& E,
                            const grid::Decomposition& d, grid::FaceField& u, grid::FaceField& w,
@@ -133,6 +145,14 @@ void rigid_face_velocities(const std::vector<core::SolidState>& bodies,
       w(i, k) = rigid(body, spec.position(Stagger::FaceZ, i, k)).z;
       w_valid(i, k) = 1;
     }
+}
+
+void extend_around_fluid(const std::vector<core::SolidState>& motions,
+                         const geometry::CutCells* cut, const grid::Decomposition& d,
+                         const grid::Halo& halo, bool recompute_mask, FluidState& f) {
+  if (recompute_mask) fluid_faces(f.cells, f.apertures, f.u_valid, f.w_valid);
+  if (cut) rigid_face_velocities(motions, *cut, f.apertures, d, f.u, f.w, f.u_valid, f.w_valid);
+  extend_velocity(f.u, f.w, f.u_valid, f.w_valid, d.halo(), halo);
 }
 
 void rigid_faces_into_flip_base(const grid::GridSpec& spec, FluidState& f) {

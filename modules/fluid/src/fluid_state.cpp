@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
+#include <vector>
 
 namespace picdem::fluid {
 
@@ -78,6 +80,20 @@ double FluidState::surface_height(double x) const {
     }
   best = d_->comm().max(best);
   return std::isfinite(best) ? best : std::nan("");
+}
+
+FluidState redistributed(const FluidState& f, const grid::Decomposition& from,
+                         const grid::Decomposition& to) {
+  FluidState moved(to);
+  // for_each_saved visits the same fields in the same order on both
+  std::vector<const void*> sources;
+  f.for_each_saved([&](const char*, const auto& field) { sources.push_back(&field); });
+  std::size_t n = 0;
+  moved.for_each_saved([&](const char*, auto& field) {
+    using A = std::decay_t<decltype(field)>;
+    field = grid::redistributed(*static_cast<const A*>(sources[n++]), from, to);
+  });
+  return moved;
 }
 
 }  // namespace picdem::fluid

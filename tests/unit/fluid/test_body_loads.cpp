@@ -17,6 +17,7 @@
 #include <memory>
 #include <utility>
 
+#include "picdem/fluid/bodies.hpp"
 #include "picdem/fluid/body_loads.hpp"
 #include "picdem/geometry/circle.hpp"
 #include "picdem/geometry/polygon.hpp"
@@ -46,13 +47,7 @@ geometry::CutCells cut_cells(const std::vector<geometry::SolidPlacement>& placem
   options.tiny_fraction = tiny_fraction;
   auto cut = geometry::build_cut_cells({spec.origin, spec.h, d.storage(grid::Stagger::Cell)},
                                        placements, {}, options);
-  E = fluid::open_apertures(d);
-  for (auto [e, c] : {std::pair{&E.E_x, 0}, std::pair{&E.E_z, 1}}) {
-    const auto b = e->storage();
-    for (int k = b.k0; k < b.k1; ++k)
-      for (int i = b.i0; i < b.i1; ++i)
-        (*e)(i, k) = std::min((*e)(i, k), c == 0 ? cut.E_x(i, k) : cut.E_z(i, k));
-  }
+  E = fluid::body_apertures(cut, d);
   return cut;
 }
 

@@ -27,6 +27,9 @@ void mark_cells(const grid::GridArray<int>& count, const geometry::CutCells* cut
 void wet_enclosed_cut_cells(const grid::Decomposition& d, const geometry::CutCells& cut,
                             const Apertures& E, CellStates& cells);
 
+/// The open lengths of the faces with bodies: min(the tank's apertures, the cut cells' E).
+Apertures body_apertures(const geometry::CutCells& cut, const grid::Decomposition& d);
+
 /// Faces closed by a body (E = 0, on the grid's interior) get its rigid velocity v + omega x r,
 /// bodies[b] the motion of cut body b (obstacles: 0), and are marked valid, so that
 /// interpolation next to a solid sees the solid's motion.
@@ -35,6 +38,14 @@ void rigid_face_velocities(const std::vector<core::SolidState>& bodies,
                            const grid::Decomposition& d, grid::FaceField& u, grid::FaceField& w,
                            grid::GridArray<signed char>& u_valid,
                            grid::GridArray<signed char>& w_valid);
+
+/// The velocities around the fluid: the faces carrying fluid velocity (fluid_faces; with
+/// `recompute_mask`, else those of the last call are kept: cells and apertures unchanged since),
+/// with `cut` the faces closed by a body at its rigid velocity (rigid_face_velocities, `motions`
+/// the motion of each cut body), then extended into the rest (extend_velocity, the halo's width).
+void extend_around_fluid(const std::vector<core::SolidState>& motions,
+                         const geometry::CutCells* cut, const grid::Decomposition& d,
+                         const grid::Halo& halo, bool recompute_mask, FluidState& f);
 
 /// u_old = u on the closed interior faces: the FLIP increment u - u_old is the fluid's change
 /// only, not a body sweeping over a face.

@@ -60,4 +60,11 @@ struct FluidState {
   const grid::Decomposition* d_ = nullptr;
 };
 
+/// Collective: `f` moved from the blocks of `from` to those of `to` (new cut lines): the fields a
+/// checkpoint keeps (for_each_saved) with their ghosts (grid::redistributed); every other field
+/// starts over as in FluidState(to) (the step recomputes them before reading). `to` must
+/// outlive the result.
+FluidState redistributed(const FluidState& f, const grid::Decomposition& from,
+                         const grid::Decomposition& to);
+
 }  // namespace picdem::fluid
