@@ -1,6 +1,5 @@
 #include "picdem/coupling/simulation.hpp"
 
-#include "rebalance.hpp"
 #include "step_phases.hpp"
 #include "viscous_bodies.hpp"
 
@@ -17,10 +16,13 @@
 #include "picdem/dem/dem_solver.hpp"
 #include "picdem/dem/parameters.hpp"
 #include "picdem/fluid/fluid.hpp"
+#include "picdem/fluid/fluid_state.hpp"
 #include "picdem/fluid/open_flow.hpp"
 #include "picdem/fluid/pressure_solver.hpp"
 #include "picdem/geometry/obstacles.hpp"
+#include "picdem/grid/balance.hpp"
 #include "picdem/grid/field.hpp"
+#include "picdem/particles/occupancy_pass.hpp"
 #include "picdem/particles/particles.hpp"
 #include "picdem/particles/water.hpp"
 
@@ -45,7 +47,7 @@ struct Simulation::Impl {
   particles::ParticleSet particles;
   std::unique_ptr<dem::DemSolver> dem;  // null without solids (with water)
   std::vector<geometry::Obstacle> obstacles;
-  ParticleOccupancy occupancy;  // the particles' S, from the last diagnostics to the next cells
+  particles::OccupancyPass occupancy;  // the particles' S, from the last diagnostics to the cells
 
   // the clock and what the last step reported
   double t = 0.0;
@@ -82,23 +84,32 @@ particles::ParticleSet seed_water(const Simulation::Impl& m) {
   return ps;
 }
 
-// Moves the state to `cuts` and rebuilds the pressure solvers on the new blocks.
+// Collective: sets the cut lines and moves the state to the new owners (the fluid's saved fields
+// with their ghosts, the particles, the solids), then rebuilds what holds maps of the old blocks.
 void adopt_cuts(Simulation::Impl& m, const grid::Cuts& cuts) {
-  move_to_cuts({*m.decomp, m.halo, m.set.has_fluid ? &m.fluid : nullptr, m.particles, m.dem.get()},
-               cuts);
-  m.occupancy = ParticleOccupancy{};  // on the old blocks: scattered again by the next step
+  {
+    core::ScopedTimer timer("rebalance: move");
+    const grid::Decomposition from = *m.decomp;
+    m.decomp->set_cuts(cuts.xs, cuts.zs);
+    m.halo = std::make_unique<grid::Halo>(*m.decomp);
+    if (m.set.has_fluid) m.fluid = fluid::redistributed(m.fluid, from, *m.decomp);
+    particles::migrate(m.particles, *m.decomp);
+    if (m.dem) m.dem->set_regions(grid::owned_regions(*m.decomp));
+  }
+  m.occupancy = particles::OccupancyPass{};  // on the old blocks: scattered again by the next step
   if (m.pressure) m.pressure = std::make_unique<fluid::PressureSolver>(*m.decomp, m.params);
   if (m.density_solver)
     m.density_solver = std::make_unique<fluid::PressureSolver>(
         *m.decomp, m.params, fluid::PressureSolver::Equation::DensityCorrection);
 }
 
-// grid/decomposition = weighted: cut lines balancing the particles' work (rebalance.hpp), taken
+// grid/decomposition = weighted: cut lines balancing the particles' work (particles::cell_work,
+// grid::balanced_cuts), taken
 // when they lighten the heaviest block by grid/rebalance_gain or more. A function of the particles
 // and the present cuts only, both of which a checkpoint keeps.
 void rebalance_cuts(Simulation::Impl& m) {
   if (!m.weighted() || m.comm.size() == 1 || !m.set.has_fluid) return;
-  const auto work = cell_work(*m.decomp, m.particles);
+  const auto work = particles::cell_work(*m.decomp, m.particles);
   const auto cuts =
       grid::balanced_cuts(*m.decomp, work, static_cast<int>(m.params.integer("grid/ranks_x")),
                           static_cast<int>(m.params.integer("grid/ranks_z")));
@@ -141,7 +152,7 @@ Simulation::Simulation(core::Comm comm, core::Params params) : m_(std::make_uniq
     for (const auto& o : m.obstacles)
       for (const auto& poly : o.polygons) polys.push_back(poly);
     m.dem = std::make_unique<dem::DemSolver>(comm, dem::config_from(params, spec.h),
-                                             rank_regions(d), tank, polys);
+                                             grid::owned_regions(d), tank, polys);
     m.dem->add_solids(solids);
   }
   m.set.has_solids = m.dem != nullptr;

@@ -16,7 +16,6 @@
 #include "picdem/fluid/open_flow.hpp"
 #include "picdem/fluid/viscous.hpp"
 #include "picdem/particles/figures.hpp"
-#include "picdem/particles/occupancy.hpp"
 #include "picdem/particles/particles.hpp"
 #include "viscous_bodies.hpp"
 
@@ -98,24 +97,6 @@ SolidsAtStart place_solids(const Layout& L, const StepSettings& set, const dem::
 
 namespace {
 
-// The particles' occupancy S before the open-share correction and their count per cell, from
-// the cache when current; with `sums`, P2G's sums in the same pass over the particles.
-void particle_occupancy(const Layout& L, const StepSettings& set,
-                        const particles::ParticleSet& particles, bool sums,
-                        ParticleOccupancy& occ) {
-  if (occ.current) return;
-  const int per_cell = set.particles.per_cell_1d * set.particles.per_cell_1d;
-  if (occ.S.data().empty()) occ.S = grid::CellField(L.d, Stagger::Cell, 0.0);
-  if (occ.count.data().empty()) occ.count = grid::GridArray<int>(L.d, Stagger::Cell, 0);
-  if (sums)
-    particles::occupancy(particles, L.d, L.halo, per_cell, occ.S, occ.count, set.particles,
-                         occ.sums);
-  else
-    particles::occupancy(particles, L.d, L.halo, per_cell, occ.S, &occ.count);
-  occ.current = true;
-  occ.sums_current = sums;
-}
-
 // True when `step` corrects the density (correct_density may move the particles).
 bool density_step(const StepSettings& set, long long step) {
   return set.density_relaxation > 0.0 && step % set.density_interval == 0;
@@ -126,10 +107,10 @@ bool density_step(const StepSettings& set, long long step) {
 // The occupancy S, divided by the tent's open share next to bodies, the level set and the cell
 // states (fluid::mark_cells).
 void mark_cells(const Layout& L, const StepSettings& set, const geometry::CutCells& cut,
-                const particles::ParticleSet& particles, ParticleOccupancy& occ,
+                const particles::ParticleSet& particles, particles::OccupancyPass& occ,
                 fluid::FluidState& fluid) {
   core::ScopedTimer timer("transfer: mark cells");
-  particle_occupancy(L, set, particles, true, occ);
+  occ.update(particles, L.d, L.halo, set.particles, true);
   fluid.occupancy = occ.S;
   occ.current = false;  // the particles move before the next use
   fluid::mark_cells(occ.count, set.has_bodies ? &cut : nullptr, L.d, L.halo, set.ghost_fluid,
@@ -141,7 +122,7 @@ void mark_cells(const Layout& L, const StepSettings& set, const geometry::CutCel
 
 // u~ before forces is kept for the FLIP increment.
 void particles_to_grid(const Layout& L, const StepSettings& set, const SolidsAtStart& solids,
-                       const particles::ParticleSet& particles, ParticleOccupancy& occ,
+                       const particles::ParticleSet& particles, particles::OccupancyPass& occ,
                        fluid::FluidState& f) {
   core::ScopedTimer timer("transfer: particles to grid");
   if (occ.sums_current)  // the sums of the occupancy's pass: the same particles
@@ -360,7 +341,7 @@ void advect_particles(const Layout& L, const StepSettings& set, long long step,
 Diagnostics record_diagnostics(const Layout& L, const StepSettings& set, double t, long long step,
                                double dt, const fluid::SolveStats& solve,
                                const particles::ParticleSet& P, const dem::DemSolver* dem,
-                               const SolidsAtStart* solids, ParticleOccupancy& occ,
+                               const SolidsAtStart* solids, particles::OccupancyPass& occ,
                                fluid::FluidState* fluid) {
   const core::Comm& comm = L.comm;
   Diagnostics g;
@@ -384,7 +365,7 @@ Diagnostics record_diagnostics(const Layout& L, const StepSettings& set, double 
   g.particles = comm.sum(static_cast<long long>(P.x.size()));
   if (fluid) {
     // S of the particles where the step leaves them: kept for the next step's cells
-    particle_occupancy(L, set, P, !density_step(set, step), occ);  // P2G's sums: unmoved
+    occ.update(P, L.d, L.halo, set.particles, !density_step(set, step));  // P2G's sums: unmoved
     fluid->occupancy = occ.S;
     const geometry::CutCells* cut = set.has_bodies ? &solids->cut : nullptr;
     if (cut) fluid::open_share_correction(fluid->occupancy, *cut, L.d);

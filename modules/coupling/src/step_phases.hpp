@@ -15,6 +15,7 @@
 #include "picdem/fluid/pressure_solver.hpp"
 #include "picdem/geometry/cut_cells.hpp"
 #include "picdem/grid/field.hpp"
+#include "picdem/particles/occupancy_pass.hpp"
 #include "picdem/particles/particle_set.hpp"
 #include "picdem/particles/transfer.hpp"
 #include "viscous_bodies.hpp"
@@ -58,21 +59,6 @@ struct SolidsAtStart {
   geometry::CutCells cut;
 };
 
-/// The particles' occupancy before the open-share correction (particles::occupancy) and their
-/// count per cell, computed in one pass for the particles where a step leaves them: by the
-/// diagnostics, then read by the next step's cells. `current` is cleared when the particles move
-/// (the cells of a step take it). The same pass also takes P2G's sums (`sums`, `sums_current`)
-/// when the particles stay as they are until the step's P2G: always in the cells of a step, in
-/// the diagnostics when the next step has no density correction (which moves them, and is
-/// followed by the cells again); P2G takes them and clears `sums_current`.
-struct ParticleOccupancy {
-  grid::CellField S;
-  grid::GridArray<int> count;
-  particles::GridSums sums;
-  bool current = false;
-  bool sums_current = false;
-};
-
 /// The speed besides the grid's face velocities that bounds the step (time/cfl_speed): the
 /// particles' fastest speed (particles::max_speed), or the solids' fastest surface speed
 /// (dem::max_surface_speed). Collective.
@@ -92,7 +78,7 @@ SolidsAtStart place_solids(const Layout& L, const StepSettings& set, const dem::
 /// transfer (cells): occupancy S (from `occ` when current), level set phi, cell states, surface
 /// fractions.
 void mark_cells(const Layout& L, const StepSettings& set, const geometry::CutCells& cut,
-                const particles::ParticleSet& particles, ParticleOccupancy& occ,
+                const particles::ParticleSet& particles, particles::OccupancyPass& occ,
                 fluid::FluidState& fluid);
 
 /// density: moves crowded or thinned particles (positions only); true when they moved. `solver`
@@ -104,7 +90,7 @@ bool correct_density(const Layout& L, const StepSettings& set, long long step,
 /// transfer: particles -> faces (from occ.sums when current), walls, fluid-face mask, rigid faces,
 /// extension; u_old = u.
 void particles_to_grid(const Layout& L, const StepSettings& set, const SolidsAtStart& solids,
-                       const particles::ParticleSet& particles, ParticleOccupancy& occ,
+                       const particles::ParticleSet& particles, particles::OccupancyPass& occ,
                        fluid::FluidState& fluid);
 
 /// forces: gravity and viscosity -> u~. Explicit, or implicit at the true boundaries of every
@@ -152,7 +138,7 @@ void advect_particles(const Layout& L, const StepSettings& set, long long step,
 Diagnostics record_diagnostics(const Layout& L, const StepSettings& set, double t, long long step,
                                double dt, const fluid::SolveStats& solve,
                                const particles::ParticleSet& particles, const dem::DemSolver* dem,
-                               const SolidsAtStart* solids, ParticleOccupancy& occ,
+                               const SolidsAtStart* solids, particles::OccupancyPass& occ,
                                fluid::FluidState* fluid);
 
 }  // namespace picdem::coupling

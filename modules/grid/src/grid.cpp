@@ -191,4 +191,15 @@ Halo::Halo(const Decomposition& d) : comm_(d.comm().raw()) {
   }
 }
 
+std::vector<core::Box2> owned_regions(const Decomposition& d) {
+  std::vector<core::Box2> out;
+  const auto& s = d.spec();
+  for (int r = 0; r < d.size(); ++r) {
+    const auto b = d.owned_cells(r);
+    out.push_back({{s.origin.x + b.i0 * s.h, s.origin.z + b.k0 * s.h},
+                   {s.origin.x + b.i1 * s.h, s.origin.z + b.k1 * s.h}});
+  }
+  return out;
+}
+
 }  // namespace picdem::grid

@@ -96,4 +96,7 @@ class Decomposition {
   std::vector<int> xs_, zs_;  // block starts, size px+1 / pz+1
 };
 
+/// The region of space each rank owns (its cells), by rank.
+std::vector<core::Box2> owned_regions(const Decomposition& d);
+
 }  // namespace picdem::grid
