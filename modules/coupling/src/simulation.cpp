@@ -172,46 +172,6 @@ Simulation::Simulation(core::Comm comm, core::Params params) : m_(std::make_uniq
 
 Simulation::~Simulation() = default;
 
-const std::vector<std::string>& Diagnostics::scalar_names() {
-  static const std::vector<std::string> names{"t",
-                                              "dt",
-                                              "step",
-                                              "fluid_volume",
-                                              "kinetic_energy",
-                                              "ppe_iterations",
-                                              "ppe_residual",
-                                              "front_x",
-                                              "particles",
-                                              "max_speed",
-                                              "solid_kinetic_energy"};
-  return names;
-}
-
-std::vector<double> Diagnostics::scalars() const {
-  return {t,
-          dt,
-          static_cast<double>(step),
-          fluid_volume,
-          kinetic_energy,
-          static_cast<double>(ppe_iterations),
-          ppe_residual,
-          front_x,
-          static_cast<double>(particles),
-          max_speed,
-          solid_kinetic_energy};
-}
-
-void Diagnostics::set_scalars(const std::vector<double>& v) {
-  if (v.size() != scalar_names().size())
-    throw std::invalid_argument("Diagnostics::set_scalars: " + std::to_string(v.size()) +
-                                " values, expected " + std::to_string(scalar_names().size()));
-  t = v[0], dt = v[1], step = static_cast<long long>(v[2]);
-  fluid_volume = v[3], kinetic_energy = v[4];
-  ppe_iterations = static_cast<int>(v[5]);
-  ppe_residual = v[6], front_x = v[7], particles = static_cast<long long>(v[8]);
-  max_speed = v[9], solid_kinetic_energy = v[10];
-}
-
 Simulation::GridSplit Simulation::grid_split() const {
   return {m_->decomp->x_cuts(), m_->decomp->z_cuts()};
 }

@@ -1,5 +1,7 @@
 #include "checkpoint_state.hpp"
 
+#include "diagnostic_columns.hpp"
+
 #include <chrono>
 #include <cstdlib>
 #include <iostream>
@@ -46,7 +48,7 @@ void write_header(io::CheckpointWriter& out, const CheckpointParts& parts,
   out.attribute("step", head.step);
   out.attribute("ranks", static_cast<long long>(parts.comm.size()));
   out.attribute("has_fluid", static_cast<long long>(parts.fluid ? 1 : 0));
-  out.attribute("diagnostics", head.diag.scalars());
+  out.attribute("diagnostics", diagnostic_scalars(head.diag));
   out.attribute("diagnostics_solids_in_box", head.diag.solids_in_box);
   if (!head.diag.levels.empty()) out.attribute("diagnostics_levels", head.diag.levels);
   if (!head.diag.open_volumes.empty())  // open sides (doc/open_boundaries.md)
@@ -101,11 +103,10 @@ CheckpointHeader read_header(const io::CheckpointReader& in, const CheckpointPar
     head.t = in.attribute_double("t");
     head.step = in.attribute_int("step");
     const auto v = in.attribute_doubles("diagnostics");
-    if (v.size() != coupling::Diagnostics::scalar_names().size())
+    if (v.size() != diagnostic_names().size())
       throw core::InputError(where + ": attribute 'diagnostics' has " + std::to_string(v.size()) +
-                             " values, expected " +
-                             std::to_string(coupling::Diagnostics::scalar_names().size()));
-    head.diag.set_scalars(v);
+                             " values, expected " + std::to_string(diagnostic_names().size()));
+    set_diagnostic_scalars(head.diag, v);
     if (in.has_attribute("diagnostics_solids_in_box"))
       head.diag.solids_in_box = in.attribute_int("diagnostics_solids_in_box");
     if (in.has_attribute("diagnostics_levels"))

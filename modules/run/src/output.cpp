@@ -1,5 +1,7 @@
 #include "picdem/run/output.hpp"
 
+#include "diagnostic_columns.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -74,7 +76,7 @@ Output::Output(core::Comm comm, const core::Params& params, const grid::Decompos
     frames_writer_ = std::make_unique<io::FrameWriter>(
         dir_, d, append, resume ? resume->last_frame_step : std::numeric_limits<long long>::max(),
         io::code_version());
-  std::vector<std::string> columns = coupling::Diagnostics::scalar_names();
+  std::vector<std::string> columns = diagnostic_names();
   const auto probes = params.reals("output/level_probes");
   for (std::size_t n = 0; n < probes.size(); ++n)
     columns.push_back("level_" + std::to_string(n + 1));
@@ -101,7 +103,7 @@ Output::Output(core::Comm comm, const core::Params& params, const grid::Decompos
 Output::~Output() = default;
 
 void Output::record(const coupling::Diagnostics& g) {
-  std::vector<double> row = g.scalars();
+  std::vector<double> row = diagnostic_scalars(g);
   row.insert(row.end(), g.levels.begin(), g.levels.end());
   if (!params_.reals("output/solid_count_box").empty())
     row.push_back(static_cast<double>(g.solids_in_box));

@@ -29,7 +29,8 @@ struct Obstacle;
 
 namespace picdem::coupling {
 
-/// Figures of the state, recorded every step in timeseries.csv.
+/// Figures of the state, recorded every step in timeseries.csv (its columns:
+/// run/src/diagnostic_columns.hpp).
 struct Diagnostics {
   double t = 0.0;
   double dt = 0.0;
@@ -49,13 +50,6 @@ struct Diagnostics {
   /// With open sides (open/): the volumes that entered through the inflows and left through the
   /// outflows since t = 0 [m^2 per unit depth], from the face velocities; empty without.
   std::vector<double> open_volumes;
-
-  /// The scalar figures from t to solid_kinetic_energy, in this order: the first columns of
-  /// timeseries.csv and the checkpoint's 'diagnostics' attribute.
-  static const std::vector<std::string>& scalar_names();
-  std::vector<double> scalars() const;
-  /// Throws std::invalid_argument when v does not hold scalar_names().size() values.
-  void set_scalars(const std::vector<double>& v);
 };
 
 /// One row of forces.csv (doc/output.md): the fluid's loads on a solid or obstacle over the last
