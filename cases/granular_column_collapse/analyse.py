@@ -22,7 +22,7 @@ import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 import granular_common as gc  # noqa: E402  (solids.csv reader, deposit front, line fits)
 
-WIDTH = {0.5: 0.3033, 1: 0.2145, 2: 0.1517, 4: 0.1072, 8: 0.0758}
+WIDTH = {0.5: 0.2746, 1: 0.1942, 2: 0.1373, 4: 0.0971, 8: 0.0687}
 R50, FLOOR, GAP_EJECT = 0.0025, 0.004, 0.018
 
 

@@ -7,7 +7,7 @@
 set -euo pipefail
 picdem=$1; out=$2; shift 2
 here=$(cd "$(dirname "$0")" && pwd)
-declare -A width=([0.5]=0.3033 [1]=0.2145 [2]=0.1517 [4]=0.1072 [8]=0.0758)
+declare -A width=([0.5]=0.2746 [1]=0.1942 [2]=0.1373 [4]=0.0971 [8]=0.0687)
 declare -A end=([0.5]=1.0 [1]=1.1 [2]=1.3 [4]=1.5 [8]=1.8)
 mkdir -p "$out"
 for a in ${A_LIST:-8 4 2 1 0.5}; do
