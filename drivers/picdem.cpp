@@ -14,6 +14,7 @@
 #include "input_checks.hpp"
 #include "picdem/core/error.hpp"
 #include "picdem/core/log.hpp"
+#include "picdem/core/timer.hpp"
 #include "picdem/coupling/schema.hpp"
 #include "picdem/coupling/simulation.hpp"
 #include "picdem/fluid/pressure_solver.hpp"
@@ -110,7 +111,10 @@ int run_case(const picdem::core::Comm& comm, const Args& args, const picdem::cor
                                ? picdem::io::latest_checkpoint(comm, checkpoints.directory)
                                : args.restart;
   run.record.start(out, args.case_file, params, from);
-  run.sim = std::make_unique<picdem::coupling::Simulation>(comm, params);
+  {
+    picdem::core::ScopedTimer timer("setup");  // grid, seeding, solids, solvers (timers.txt)
+    run.sim = std::make_unique<picdem::coupling::Simulation>(comm, params);
+  }
   run.steps = std::make_unique<picdem::run::Run>(*run.sim);
   if (from.empty())
     run.steps->open_output(out);

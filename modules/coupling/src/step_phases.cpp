@@ -155,8 +155,7 @@ ViscousExchange add_forces(const Layout& L, const fluid::FluidConfig& cfg, bool 
     viscous = viscous_exchange(all, step.loads, dem, L.comm);
     f.viscous_wall_force = step.loads.wall_force;
     fluid::apply_gravity(f.u, f.w, f.cells, dt, cfg);  // on owned faces: the halo follows
-    L.halo.forward(f.u);
-    L.halo.forward(f.w);
+    L.halo.forward_all({&f.u, &f.w});
   } else {
     fluid::apply_gravity(f.u, f.w, f.cells, dt, cfg);
     fluid::apply_viscosity(f.u, f.w, f.cells, dt, cfg, L.d, L.halo);
@@ -244,7 +243,7 @@ void extend_displacement(const Layout& L, const fluid::FluidConfig& unit,
       for (int i = b.i0; i < b.i1; ++i)
         if ((*E)(i, k) <= 0.0) (*valid)(i, k) = 1;
   }
-  L.halo.forward(dx), L.halo.forward(dz);
+  L.halo.forward_all({&dx, &dz});
   fluid::enforce_walls(dx, dz, unit, L.d);
   fluid::extend_velocity(dx, dz, du, dw, L.d.halo(), L.halo);
 }

@@ -43,13 +43,18 @@ SolidState unpack_state(const double* p) {
 }
 
 /// Sends buffers[r] to rank r; returns what every rank sent here, in rank order, and the count
-/// received from each rank.
+/// received from each rank. With `known_in` (the counts each rank sends here, known from an
+/// earlier exchange) the counts are not exchanged first: one collective instead of two.
 std::vector<double> all_to_all(const core::Comm& comm, const std::vector<std::vector<double>>& out,
-                               std::vector<int>* counts_in = nullptr) {
+                               std::vector<int>* counts_in = nullptr,
+                               const std::vector<int>* known_in = nullptr) {
   const int p = comm.size();
   std::vector<int> sc(p), rc(p), sd(p, 0), rd(p, 0);
   for (int r = 0; r < p; ++r) sc[r] = static_cast<int>(out[static_cast<std::size_t>(r)].size());
-  MPI_Alltoall(sc.data(), 1, MPI_INT, rc.data(), 1, MPI_INT, comm.raw());
+  if (known_in)
+    rc = *known_in;
+  else
+    MPI_Alltoall(sc.data(), 1, MPI_INT, rc.data(), 1, MPI_INT, comm.raw());
   for (int r = 1; r < p; ++r) sd[r] = sd[r - 1] + sc[r - 1], rd[r] = rd[r - 1] + rc[r - 1];
   std::vector<double> send(static_cast<std::size_t>(sd[p - 1] + sc[p - 1]));
   for (int r = 0; r < p; ++r)
@@ -178,7 +183,11 @@ void DemSolver::forward() {
       const SolidState& s = owned_[static_cast<std::size_t>(i)];
       out[r].insert(out[r].end(), {s.x.x, s.x.z, s.theta, s.v.x, s.v.z, s.omega});
     }
-  const std::vector<double> in = all_to_all(comm_, out);
+  // the ghosts of each rank are those of borders(): 6 of its state_doubles per ghost
+  std::vector<int> in_count(recv_count_.size());
+  for (std::size_t r = 0; r < in_count.size(); ++r)
+    in_count[r] = recv_count_[r] / state_doubles * 6;
+  const std::vector<double> in = all_to_all(comm_, out, nullptr, &in_count);
   for (std::size_t g = 0; g < ghosts_.size(); ++g) {
     const double* p = &in[6 * g];
     ghosts_[g].x = {p[0], p[1]};

@@ -54,10 +54,10 @@ void divide(FaceField& u, FaceField& weight) {
 // The sums reverse-added to the owners, divided, forwarded.
 void exchange_and_divide(const grid::Halo& halo, FaceField& u, FaceField& w, FaceField& weight_u,
                          FaceField& weight_w) {
-  for (FaceField* f : {&u, &weight_u, &w, &weight_w}) halo.reverse_add(*f);
+  halo.reverse_add_all({&u, &weight_u, &w, &weight_w});  // one message per neighbour
   divide(u, weight_u);
   divide(w, weight_w);
-  for (FaceField* f : {&u, &weight_u, &w, &weight_w}) halo.forward(*f);
+  halo.forward_all({&u, &weight_u, &w, &weight_w});
 }
 
 }  // namespace

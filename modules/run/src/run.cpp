@@ -65,7 +65,10 @@ void Run::run(long long max_steps) {
   long long last_checkpoint_step = restarted_ ? sim_.step_count() : -1;
   stopped_by_signal_ = false;
   while (sim_.time() < t_end * (1.0 - 1e-12) && (max_steps <= 0 || sim_.step_count() < max_steps)) {
-    sim_.step();
+    {
+      core::ScopedTimer timer("step");  // the whole step: its phases and what lies between them
+      sim_.step();
+    }
     const coupling::Diagnostics& diag = sim_.diagnostics();
     check_step(diag, h, sim_.has_fluid(), grid_speed, sim_.dem(), comm);
     if (output_) {

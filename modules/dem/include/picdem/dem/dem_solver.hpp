@@ -165,7 +165,7 @@ class DemSolver {
   std::vector<double> omega_start_;
   std::vector<core::Vec2> x_at_build_;       // owned positions at the last rebuild
   std::vector<std::vector<int>> send_list_;  // per rank: owned indices sent as ghosts
-  std::vector<int> recv_count_;              // per rank: ghosts received
+  std::vector<int> recv_count_;              // per rank: doubles received in borders()
   // neighbour list of owned solids (CSR): partners are local indices (owned, then ghosts),
   // sorted by global id
   std::vector<int> nbr_start_, nbr_;

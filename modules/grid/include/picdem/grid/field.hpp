@@ -4,9 +4,12 @@
 //   reverse_add : ghost contributions -> added into the owners' values.
 #include <mpi.h>
 
+#include <algorithm>
 #include <cstring>
+#include <initializer_list>
 #include <vector>
 
+#include "picdem/core/timer.hpp"
 #include "picdem/grid/grid.hpp"
 
 namespace picdem::grid {
@@ -63,6 +66,18 @@ class Halo {
   void reverse_add(GridArray<T>& f) const {
     exchange(f, /*reverse=*/true);
   }
+  /// forward() of several arrays (any staggerings) in one round of messages: one message per
+  /// neighbour carries all of them. The same values as one forward() per array.
+  template <class T>
+  void forward_all(std::initializer_list<GridArray<T>*> fs) const {
+    exchange_all(fs, /*reverse=*/false);
+  }
+  /// reverse_add() of several arrays in one round of messages; every sample receives the same
+  /// additions in the same (rank) order as with one reverse_add() per array.
+  template <class T>
+  void reverse_add_all(std::initializer_list<GridArray<T>*> fs) const {
+    exchange_all(fs, /*reverse=*/true);
+  }
 
  private:
   struct Link {
@@ -80,9 +95,29 @@ class Halo {
   }
 
   template <class T>
+  static void unpack(GridArray<T>& f, const IndexBox& b, const T* buf, bool reverse) {
+    for (int k = b.k0; k < b.k1; ++k)
+      for (int i = b.i0; i < b.i1; ++i, ++buf) {
+        if (reverse)
+          f(i, k) += *buf;
+        else
+          f(i, k) = *buf;
+      }
+  }
+
+  /// The box of `f` sent to (out) or received from rank r: empty when r is not its neighbour.
+  template <class T>
+  IndexBox box_with(const GridArray<T>& f, int r, bool out, bool reverse) const {
+    for (const Link& l : links(f.stagger()))
+      if (l.rank == r) return out != reverse ? l.mine_in_theirs : l.theirs_in_mine;
+    return IndexBox{};
+  }
+
+  template <class T>
   void exchange(GridArray<T>& f, bool reverse) const {
     const auto& ls = links(f.stagger());
     if (ls.empty()) return;
+    core::ScopedTimer timer(reverse ? "halo: reverse add" : "halo: forward");
     std::vector<std::vector<T>> send(ls.size()), recv(ls.size());
     std::vector<MPI_Request> req;
     req.reserve(2 * ls.size());
@@ -112,6 +147,44 @@ class Halo {
           else
             f(i, k) = recv[n][m];
         }
+    }
+  }
+
+  // The neighbours of every array's staggering (links are symmetric: both sides agree on them),
+  // one message each way per neighbour with the arrays' boxes one after the other.
+  template <class T>
+  void exchange_all(std::initializer_list<GridArray<T>*> fs, bool reverse) const {
+    std::vector<int> ranks;
+    for (const GridArray<T>* f : fs)
+      for (const Link& l : links(f->stagger())) ranks.push_back(l.rank);
+    if (ranks.empty()) return;
+    core::ScopedTimer timer(reverse ? "halo: reverse add" : "halo: forward");
+    std::sort(ranks.begin(), ranks.end());
+    ranks.erase(std::unique(ranks.begin(), ranks.end()), ranks.end());
+    std::vector<std::vector<T>> send(ranks.size()), recv(ranks.size());
+    std::vector<MPI_Request> req(2 * ranks.size());
+    std::vector<T> part;
+    for (std::size_t n = 0; n < ranks.size(); ++n) {
+      long long in_size = 0;
+      for (const GridArray<T>* f : fs) {
+        in_size += box_with(*f, ranks[n], false, reverse).size();
+        pack(*f, box_with(*f, ranks[n], true, reverse), part);
+        send[n].insert(send[n].end(), part.begin(), part.end());
+      }
+      recv[n].resize(static_cast<std::size_t>(in_size));
+      MPI_Irecv(recv[n].data(), static_cast<int>(recv[n].size() * sizeof(T)), MPI_BYTE, ranks[n],
+                760, comm_, &req[2 * n]);
+      MPI_Isend(send[n].data(), static_cast<int>(send[n].size() * sizeof(T)), MPI_BYTE, ranks[n],
+                760, comm_, &req[2 * n + 1]);
+    }
+    MPI_Waitall(static_cast<int>(req.size()), req.data(), MPI_STATUSES_IGNORE);
+    for (std::size_t n = 0; n < ranks.size(); ++n) {
+      const T* p = recv[n].data();
+      for (GridArray<T>* f : fs) {
+        const IndexBox in = box_with(*f, ranks[n], false, reverse);
+        unpack(*f, in, p, reverse);
+        p += in.size();
+      }
     }
   }
 
