@@ -102,8 +102,10 @@ TEST(WorkDecomposition, RanksCutThroughWaterAndCylindersAndAgreeWithOneRank) {
                      std::abs(a.solids[n + 3] - b.solids[n + 3])});
     }
     if (rank == 0)
-      std::printf("%d steps, 1 vs %d ranks: position difference %.3e m, velocity %.3e m/s\n", steps,
-                  ranks, dx, dv);
+      std::printf(
+          "%d steps, 1 vs %d ranks: position difference %.3e m, velocity %.3e m/s, fluid volume "
+          "%.3e relative\n",
+          steps, ranks, dx, dv, std::abs(a.d.fluid_volume - b.d.fluid_volume) / a.d.fluid_volume);
     EXPECT_LT(dx, 1e-7);
     EXPECT_LT(dv, 1e-5);
     EXPECT_NEAR(a.d.fluid_volume, b.d.fluid_volume, 1e-6 * a.d.fluid_volume);
