@@ -65,21 +65,25 @@ namespace {
 
 // Water is seeded where neither solids nor obstacles are. Cells are seeded by their centre;
 // particles that fall inside a body are then removed, so that cut cells whose centre is covered
-// still get particles in their fluid part.
+// still get particles in their fluid part. The seeding's jitter keeps the lattice's occupancy over
+// the particles whose lattice position is wet (particles::seed): a level surface on a cell face
+// is seeded flat.
 particles::ParticleSet seed_water(const Simulation::Impl& m) {
   const particles::WaterRegions water(m.params);
   const SolidScene scene0 = scene_of(m.dem.get(), m.obstacles);
   const SolidLocator locator(scene0);
-  auto ps = particles::seed(*m.decomp, m.set.particles, [&](Vec2 c) {
-    const double r = 0.5 * m.set.spec.h;
-    return water.contains(c) || water.contains(c + Vec2{r, r}) || water.contains(c + Vec2{-r, r}) ||
-           water.contains(c + Vec2{r, -r}) || water.contains(c + Vec2{-r, -r});
-  });
+  const auto wet = [&](Vec2 p) { return water.contains(p) && !locator.inside(p); };
+  auto ps = particles::seed(
+      *m.decomp, m.set.particles,
+      [&](Vec2 c) {
+        const double r = 0.5 * m.set.spec.h;
+        return water.contains(c) || water.contains(c + Vec2{r, r}) ||
+               water.contains(c + Vec2{-r, r}) || water.contains(c + Vec2{r, -r}) ||
+               water.contains(c + Vec2{-r, -r});
+      },
+      wet);
   std::vector<char> keep(ps.size());
-  for (std::size_t n = 0; n < keep.size(); ++n) {
-    const Vec2 p{ps.x[n], ps.z[n]};
-    keep[n] = water.contains(p) && !locator.inside(p);
-  }
+  for (std::size_t n = 0; n < keep.size(); ++n) keep[n] = wet({ps.x[n], ps.z[n]});
   ps.keep_if(keep);
   return ps;
 }

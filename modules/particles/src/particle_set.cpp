@@ -1,6 +1,7 @@
 #include "picdem/particles/particle_set.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "picdem/core/error.hpp"
@@ -155,28 +156,159 @@ core::Vec2 velocity_sum(const ParticleSet& particles, const core::Comm& comm) {
   return {comm.sum(sx), comm.sum(sz)};
 }
 
+namespace {
+
+// A seeded particle of one dual cell (the square between four cell centres, around a grid node),
+// in sub-cell units: its lattice position relative to the node and its jitter (u, v).
+struct Member {
+  int i, k;              // its cell
+  std::uint64_t gid, n;  // its cell's global id and its index in the cell: its random numbers' keys
+  double x, z;
+  bool free_x, free_z;  // false on a cell's centre line (odd per_cell_1d): not jittered across it
+  double u = 0.0, v = 0.0;
+};
+
+// Draws of one axis for every member, jitter (r - 1/2) on the free ones, less their mean;
+// returns the largest |offset|.
+double draw_axis(std::vector<Member>& m, const ParticleConfig& c, int axis, int attempt) {
+  double sum = 0.0, largest = 0.0;
+  int free = 0;
+  for (Member& p : m) {
+    const bool f = axis == 0 ? p.free_x : p.free_z;
+    const double r =
+        core::uniform01(c.seed, p.gid, p.n, static_cast<std::uint64_t>(2 * attempt + axis));
+    (axis == 0 ? p.u : p.v) = f ? c.jitter * (r - 0.5) : 0.0;
+    sum += f ? (axis == 0 ? p.u : p.v) : 0.0, free += f;
+  }
+  for (Member& p : m) {
+    double& o = axis == 0 ? p.u : p.v;
+    if (axis == 0 ? p.free_x : p.free_z) o -= sum / free;
+    largest = std::max(largest, std::abs(o));
+  }
+  return largest;
+}
+
+// Moves v (least change, keeping its mean 0) onto sum (x + u) v = -sum z u: with the means 0
+// that is sum (x + u)(z + v) = sum x z. Returns false when no v satisfies it.
+bool keep_xz_sum(std::vector<Member>& m) {
+  double mean = 0.0, d = 0.0, cc = 0.0, cv = 0.0;
+  int free = 0;
+  for (const Member& p : m) {
+    d -= p.z * p.u;
+    if (p.free_z) mean += p.x + p.u, ++free;
+  }
+  if (free > 0) mean /= free;
+  for (const Member& p : m)
+    if (p.free_z) cc += (p.x + p.u - mean) * (p.x + p.u - mean), cv += (p.x + p.u - mean) * p.v;
+  if (cc < 1e-24) return std::abs(d) < 1e-12;
+  const double lambda = (d - cv) / cc;
+  for (Member& p : m)
+    if (p.free_z) p.v += lambda * (p.x + p.u - mean);
+  return true;
+}
+
+// The jitter of one dual cell's members (sub-cell units). They keep the lattice's sums of x, z
+// and x z over the members, so the bilinear tent on the four cell centres around them (the
+// occupancy) gets the lattice's weights exactly. u and v are drawn with mean 0 and v then moved
+// onto the x z sum (keep_xz_sum); a draw with an offset outside (-jitter/2, jitter/2) is drawn
+// again. After 8 draws, u = 0 (then the x z sum is linear in v) and v is scaled into the range.
+void jitter_group(std::vector<Member>& m, const ParticleConfig& c) {
+  const double bound = 0.5 * c.jitter;
+  constexpr int attempts = 8;
+  for (int attempt = 0; attempt < attempts; ++attempt) {
+    if (draw_axis(m, c, 0, attempt) >= bound) continue;
+    draw_axis(m, c, 1, attempt);
+    if (!keep_xz_sum(m)) continue;
+    double largest = 0.0;
+    for (const Member& p : m) largest = std::max(largest, std::abs(p.v));
+    if (largest < bound) return;
+  }
+  for (Member& p : m) p.u = 0.0;
+  draw_axis(m, c, 1, attempts);
+  keep_xz_sum(m);
+  double largest = 0.0;
+  for (const Member& p : m) largest = std::max(largest, std::abs(p.v));
+  if (largest >= bound)
+    for (Member& p : m) p.v *= 0.99 * bound / largest;
+}
+
+// The members of the dual cell around node (I, K): per cell, the sub-cell particles on the
+// node's side of the cell's centre lines (the centre line itself goes with the node above it).
+void members_of(int I, int K, int n1, const grid::GridSpec& s,
+                const std::function<bool(int, int)>& seeded,
+                const std::function<bool(core::Vec2)>& keep, std::vector<Member>& m) {
+  const double sub = s.h / n1;
+  m.clear();
+  for (int k = K - 1; k <= K; ++k)
+    for (int i = I - 1; i <= I; ++i) {
+      if (i < 0 || k < 0 || i >= s.nx || k >= s.nz || !seeded(i, k)) continue;
+      const auto gid = static_cast<std::uint64_t>(s.cell_gid(i, k));
+      for (int b = 0; b < n1; ++b)
+        for (int a = 0; a < n1; ++a) {
+          if ((i == I) != (2 * a + 1 < n1) || (k == K) != (2 * b + 1 < n1)) continue;
+          if (keep && !keep({s.origin.x + i * s.h + (a + 0.5) * sub,
+                             s.origin.z + k * s.h + (b + 0.5) * sub}))
+            continue;
+          m.push_back({i, k, gid, static_cast<std::uint64_t>(b * n1 + a), (i - I) * n1 + a + 0.5,
+                       (k - K) * n1 + b + 0.5, 2 * a + 1 != n1, 2 * b + 1 != n1});
+        }
+    }
+}
+
+}  // namespace
+
 ParticleSet seed(const grid::Decomposition& d, const ParticleConfig& config,
-                 const std::function<bool(core::Vec2)>& inside) {
+                 const std::function<bool(core::Vec2)>& inside,
+                 const std::function<bool(core::Vec2)>& keep) {
   const grid::GridSpec& s = d.spec();
   const core::IndexBox cells = d.owned_cells();
-  const int n1 = config.per_cell_1d;
+  const int n1 = config.per_cell_1d, nn = n1 * n1;
   const double sub = s.h / n1;  // sub-cell spacing
+  // whether a cell is seeded, over the owned cells and one ring (the dual cells reach it)
+  const core::IndexBox ring = cells.grown(1);
+  std::vector<char> seeded_cell(static_cast<std::size_t>(ring.nx()) * ring.nz(), 0);
+  for (int k = std::max(ring.k0, 0); k < std::min(ring.k1, s.nz); ++k)
+    for (int i = std::max(ring.i0, 0); i < std::min(ring.i1, s.nx); ++i)
+      seeded_cell[static_cast<std::size_t>(k - ring.k0) * ring.nx() + (i - ring.i0)] =
+          inside(s.position(grid::Stagger::Cell, i, k));
+  const auto seeded = [&](int i, int k) {
+    return seeded_cell[static_cast<std::size_t>(k - ring.k0) * ring.nx() + (i - ring.i0)] != 0;
+  };
+  // the jitter of the owned cells' particles, dual cell by dual cell (the same on every rank)
+  const auto slot = [&](int i, int k, int n) {
+    return (static_cast<std::size_t>(k - cells.k0) * cells.nx() + (i - cells.i0)) * nn + n;
+  };
+  std::vector<double> ju(static_cast<std::size_t>(cells.nx()) * cells.nz() * nn, 0.0);
+  std::vector<double> jv(ju.size(), 0.0);
+  if (config.jitter > 0.0) {
+    std::vector<Member> m;
+    for (int K = cells.k0; K <= cells.k1; ++K)
+      for (int I = cells.i0; I <= cells.i1; ++I) {
+        members_of(I, K, n1, s, seeded, keep, m);
+        if (m.empty()) continue;
+        jitter_group(m, config);
+        for (const Member& p : m) {
+          if (!cells.contains(p.i, p.k)) continue;
+          ju[slot(p.i, p.k, static_cast<int>(p.n))] = p.u;
+          jv[slot(p.i, p.k, static_cast<int>(p.n))] = p.v;
+        }
+      }
+  }
   ParticleSet p;
   p.spec = s;
   const double zero[4] = {0.0, 0.0, 0.0, 0.0};
   for (int k = cells.k0; k < cells.k1; ++k)
     for (int i = cells.i0; i < cells.i1; ++i) {
-      if (!inside(s.position(grid::Stagger::Cell, i, k))) continue;
+      if (!seeded(i, k)) continue;
       const auto gid = static_cast<std::uint64_t>(s.cell_gid(i, k));
       for (int b = 0; b < n1; ++b)
         for (int a = 0; a < n1; ++a) {
-          const auto n = static_cast<std::uint64_t>(b * n1 + a);
-          // x = x_cell + (a + 1/2 + jitter (r - 1/2)) h / n1
-          const double rx = core::uniform01(config.seed, gid, n, 0);
-          const double rz = core::uniform01(config.seed, gid, n, 1);
-          const core::Vec2 pos{s.origin.x + i * s.h + (a + 0.5 + config.jitter * (rx - 0.5)) * sub,
-                               s.origin.z + k * s.h + (b + 0.5 + config.jitter * (rz - 0.5)) * sub};
-          p.push_back(static_cast<std::int64_t>(gid * n1 * n1 + n), pos, {0.0, 0.0}, zero);
+          const int n = b * n1 + a;
+          // x = x_cell + (a + 1/2 + u) h / n1
+          const core::Vec2 pos{s.origin.x + i * s.h + (a + 0.5 + ju[slot(i, k, n)]) * sub,
+                               s.origin.z + k * s.h + (b + 0.5 + jv[slot(i, k, n)]) * sub};
+          p.push_back(static_cast<std::int64_t>(gid * nn + static_cast<std::uint64_t>(n)), pos,
+                      {0.0, 0.0}, zero);
         }
     }
   return p;

@@ -86,8 +86,16 @@ core::Vec2 velocity_sum(const ParticleSet& particles, const core::Comm& comm);
 /// Seeds per_cell_1d^2 jittered particles at rest in every owned cell whose centre satisfies
 /// inside(centre). Positions and ids depend on the cell's global id only: the union over ranks
 /// is the same whatever the rank count. Ids are cell_gid * per_cell_1d^2 + n.
+///
+/// The jitter keeps, over the particles of each dual cell (the square between four cell
+/// centres), the sums of x, z and x z of the lattice, so the occupancy's bilinear tent reads the
+/// seeding exactly as the lattice (picdem/particles/occupancy.hpp): jitter moves no free
+/// surface. Particles whose lattice position fails `keep` (if given) are left on the lattice and
+/// out of their dual cell's sums: the caller removes them (water outside the case's region, in
+/// bodies). On a cell's centre line (odd per_cell_1d) a particle is not jittered across it.
 ParticleSet seed(const grid::Decomposition& decomposition, const ParticleConfig& config,
-                 const std::function<bool(core::Vec2)>& inside);
+                 const std::function<bool(core::Vec2)>& inside,
+                 const std::function<bool(core::Vec2)>& keep = nullptr);
 
 /// First id handed out by reseeding: no seeded particle reaches it.
 std::int64_t first_reseed_id(const grid::GridSpec& spec, const ParticleConfig& config);
