@@ -214,8 +214,8 @@ void Simulation::step() {
       mark_cells(L, set, solids.cut, m.particles, m.occupancy, m.fluid);   // density: cells again
     particles_to_grid(L, set, solids, m.particles, m.occupancy, m.fluid);  // transfer
     m.viscous = add_forces(L, set.fluid, set.viscous_rigid_rows, m.dem.get(), m.obstacles, dt,
-                           m.fluid);                     // forces
-    auto collision = predict_contacts(m.dem.get(), dt);  // contact
+                           set.ghost_fluid ? &m.fluid.surface : nullptr, m.fluid);  // forces
+    auto collision = predict_contacts(m.dem.get(), dt);                             // contact
     // eq. 6: the viscous loads join the p-independent loads of V* (doc/viscous.md)
     if (m.dem && !m.viscous.solids.empty()) collision = plus_viscous(collision, m.viscous, *m.dem);
     solve = solve_pressure(L, set, solids, collision, dt, *m.pressure, m.fluid);  // pressure

@@ -136,11 +136,21 @@ void particles_to_grid(const Layout& L, const StepSettings& set, const SolidsAtS
   f.u_old = f.u, f.w_old = f.w;
 }
 
+namespace {
+
+void add_scaled(grid::FaceField& a, const grid::FaceField& b, double s) {
+  const auto& box = a.storage();
+  for (int k = box.k0; k < box.k1; ++k)
+    for (int i = box.i0; i < box.i1; ++i) a(i, k) += s * b(i, k);
+}
+
+}  // namespace
+
 // Viscosity explicit, or implicit at the true boundaries of every solid (at X^n) and obstacle.
 ViscousExchange add_forces(const Layout& L, const fluid::FluidConfig& cfg, bool rigid_rows,
                            const dem::DemSolver* dem,
                            const std::vector<geometry::Obstacle>& obstacles, double dt,
-                           fluid::FluidState& f) {
+                           const fluid::SurfaceFractions* surface, fluid::FluidState& f) {
   core::ScopedTimer timer("forces");
   ViscousExchange viscous;
   if (cfg.implicit_viscosity) {
@@ -150,8 +160,19 @@ ViscousExchange add_forces(const Layout& L, const fluid::FluidConfig& cfg, bool 
     auto bodies = viscous_bodies(all, rigid_rows);
     for (std::size_t o = 0; o < cfg.obstacle_free_slip.size(); ++o)  // obstacles/<name>/wall
       bodies[all.placements.size() + o].free_slip = cfg.obstacle_free_slip[o] != 0;
+    // With the pressure predictor the solve takes u + du, du = dt (g - grad p^n / rho), and
+    // the result gives du back (doc/viscous.md, "Pressure predictor"); not with rigid rows, whose
+    // solids would need the same prediction of the rest of their step.
+    const bool predict = cfg.viscous_pressure_predictor && !rigid_rows;
+    grid::FaceField du(f.u), dw(f.w);
+    if (predict) {
+      fluid::viscous_pressure_predictor(du, dw, f.p, f.cells, f.apertures, dt, cfg, surface, L.d,
+                                        L.halo);
+      add_scaled(f.u, du, 1.0), add_scaled(f.w, dw, 1.0);
+    }
     const auto step =
         fluid::apply_viscosity_implicit(f.u, f.w, f.cells, dt, cfg, L.d, L.halo, bodies);
+    if (predict) add_scaled(f.u, du, -1.0), add_scaled(f.w, dw, -1.0);
     viscous = viscous_exchange(all, step.loads, dem, L.comm);
     f.viscous_wall_force = step.loads.wall_force;
     fluid::apply_gravity(f.u, f.w, f.cells, dt, cfg);  // on owned faces: the halo follows

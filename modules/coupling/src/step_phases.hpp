@@ -95,11 +95,13 @@ void particles_to_grid(const Layout& L, const StepSettings& set, const SolidsAtS
 
 /// forces: gravity and viscosity -> u~. Explicit, or implicit at the true boundaries of every
 /// solid of `dem` (collective) and obstacle, the solids' rigid velocities unknowns of it with
-/// `rigid_rows`; returns the implicit scheme's viscous loads (empty for the explicit one).
+/// `rigid_rows` (with fluid/viscous_pressure_predictor on u + dt (g - grad p^n / rho), taken off
+/// after; `surface`: the ghost fluid's, as for the projection); returns the implicit scheme's
+/// viscous loads (empty for the explicit one).
 ViscousExchange add_forces(const Layout& L, const fluid::FluidConfig& cfg, bool rigid_rows,
                            const dem::DemSolver* dem,
                            const std::vector<geometry::Obstacle>& obstacles, double dt,
-                           fluid::FluidState& fluid);
+                           const fluid::SurfaceFractions* surface, fluid::FluidState& fluid);
 
 /// contact: collision loads predicted at level n with dt in eq. 8 (none without solids).
 std::vector<core::SolidLoads> predict_contacts(const dem::DemSolver* dem, double dt);

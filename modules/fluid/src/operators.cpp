@@ -90,6 +90,11 @@ void declare_parameters(core::ParamSchema& schema) {
                 "below h^2 / (4 nu); implicit: backward Euler with no-slip at the true boundary of "
                 "solids and obstacles, whose viscous loads enter the solids' update "
                 "(doc/viscous.md)");
+  schema.boolean("fluid/viscous_pressure_predictor", true,
+                 "implicit scheme without coupling/viscous_rigid_rows: solve the viscosity for u + "
+                 "dt (g - grad p^n / rho) and take it off after, so that steady flows keep "
+                 "no-slip without the splitting's O(dt) wall slip (doc/viscous.md, \"Pressure "
+                 "predictor\")");
   schema.section("solver", "The pressure solve: Belos CG preconditioned by MueLu.");
   schema.real("solver/tolerance", 1e-8, "relative true residual ||b - A p|| / ||b|| to reach")
       .positive()
@@ -165,6 +170,7 @@ FluidConfig config_from(const core::Params& params) {
     if (v != "default") c.wall_no_slip[s] = v == "no_slip";
   }
   c.implicit_viscosity = params.string("fluid/viscosity_scheme") == "implicit";
+  c.viscous_pressure_predictor = params.boolean("fluid/viscous_pressure_predictor");
   c.h = params.real("grid/cell_size");
   c.open = open_boundaries_from(params, grid::spec_from(params));
   if (params.has("obstacles"))

@@ -1,6 +1,7 @@
 // Implicit viscosity on the step's distributed fields (viscous.hpp): gather, the stencils of
 // viscous_operator.cpp, the solve of viscous_solver.cpp, scatter.
 #include <algorithm>
+#include <cmath>
 
 #include "picdem/core/error.hpp"
 #include "picdem/core/timer.hpp"
@@ -9,6 +10,9 @@
 namespace picdem::fluid {
 
 namespace {
+
+constexpr signed char kFluid = static_cast<signed char>(grid::CellState::Fluid);
+constexpr signed char kSolid = static_cast<signed char>(grid::CellState::Solid);
 
 /// The whole grid's values of a staggered field (node id i + ni k over spec.extent), summed
 /// from every rank's owned samples.
@@ -122,6 +126,46 @@ ViscousStepResult apply_viscosity_implicit(grid::FaceField& u, grid::FaceField& 
   halo.forward(w);
   enforce_walls(u, w, cfg, d);
   return result;
+}
+
+void viscous_pressure_predictor(grid::FaceField& du, grid::FaceField& dw, const grid::CellField& p,
+                                const CellStates& cells, const Apertures& E, double dt,
+                                const FluidConfig& cfg, const SurfaceFractions* surface,
+                                const grid::Decomposition& d, const grid::Halo& halo) {
+  du.fill(0.0);
+  dw.fill(0.0);
+  // No pressure yet (the first step): no prediction.
+  double largest = 0.0;
+  const core::IndexBox own = d.owned_cells();
+  for (int k = own.k0; k < own.k1; ++k)
+    for (int i = own.i0; i < own.i1; ++i) largest = std::max(largest, std::abs(p(i, k)));
+  if (d.comm().max(largest) == 0.0) return;
+  // du = dt (g - grad p^n / rho) on the faces the projection changes (open, with a fluid cell and
+  // E > 0; fluid::project), 0 elsewhere: where the projection does not act, gravity is not
+  // balanced by a pressure and must not enter the viscous solve. Not on the tank's outer faces:
+  // they are no unknowns of the solve, and the walls and open sides set them (enforce_walls)
+  // between the shift and its removal.
+  const grid::GridSpec& g = d.spec();
+  auto open = [&](signed char a, signed char b) {
+    return a != kSolid && b != kSolid && (a == kFluid || b == kFluid);
+  };
+  const auto& bu = du.owned();
+  for (int k = bu.k0; k < bu.k1; ++k)
+    for (int i = std::max(bu.i0, 1); i < std::min(bu.i1, g.nx); ++i)
+      if (E.E_x(i, k) > 0.0 && open(cells(i - 1, k), cells(i, k))) du(i, k) = dt * cfg.g.x;
+  const auto& bw = dw.owned();
+  for (int k = std::max(bw.k0, 1); k < std::min(bw.k1, g.nz); ++k)
+    for (int i = bw.i0; i < bw.i1; ++i)
+      if (E.E_z(i, k) > 0.0 && open(cells(i, k - 1), cells(i, k))) dw(i, k) = dt * cfg.g.z;
+  project(du, dw, p, cells, E, dt, cfg, surface);  // - dt grad p^n / rho on the same faces
+  for (int k = bu.k0; k < bu.k1; ++k)
+    for (int i = bu.i0; i < bu.i1; ++i)
+      if (i <= 0 || i >= g.nx) du(i, k) = 0.0;
+  for (int k = bw.k0; k < bw.k1; ++k)
+    for (int i = bw.i0; i < bw.i1; ++i)
+      if (k <= 0 || k >= g.nz) dw(i, k) = 0.0;
+  halo.forward(du);
+  halo.forward(dw);
 }
 
 }  // namespace picdem::fluid

@@ -42,8 +42,11 @@ struct FluidConfig {
   /// Per wall (left, right, bottom, top): its own condition, overriding no_slip; empty: no_slip.
   std::array<std::optional<bool>, 4> wall_no_slip{};
   bool implicit_viscosity = false;  ///< fluid/viscosity_scheme: implicit (doc/viscous.md)
-  double h = 0.0;                   ///< cell size [m] (grid/cell_size)
-  OpenBoundaries open;              ///< open/ keys: inflow and outflow sides (open_boundary.hpp)
+  /// fluid/viscous_pressure_predictor: the implicit viscous solve takes u + dt (g - grad p^n / rho)
+  /// and removes it after (viscous_pressure_predictor, doc/viscous.md)
+  bool viscous_pressure_predictor = true;
+  double h = 0.0;       ///< cell size [m] (grid/cell_size)
+  OpenBoundaries open;  ///< open/ keys: inflow and outflow sides (open_boundary.hpp)
   /// Per obstacle, in the case's order: obstacles/<name>/wall is free_slip (implicit viscosity,
   /// ViscousBody::free_slip).
   std::vector<char> obstacle_free_slip;

@@ -161,6 +161,17 @@ ViscousStepResult apply_viscosity_implicit(grid::FaceField& u, grid::FaceField& 
                                            const std::vector<ViscousBody>& bodies,
                                            double beta = 1.0);
 
+/// The rest of the step after the viscous solve, predicted from the last step's pressure p^n
+/// (fluid/viscous_pressure_predictor, doc/viscous.md "Pressure predictor"): du = dt (g - grad p^n /
+/// rho) on the interior faces that fluid::apply_gravity and fluid::project change, 0 on the tank's
+/// outer faces and elsewhere (apply_gravity and project on zero fields; halo forwarded). The step
+/// solves the viscosity for u + du and takes du off again, so that a steady state satisfies the
+/// boundary conditions and nu L u = grad p / rho - g without the splitting's O(dt) wall slip.
+void viscous_pressure_predictor(grid::FaceField& du, grid::FaceField& dw, const grid::CellField& p,
+                                const CellStates& cells, const Apertures& E, double dt,
+                                const FluidConfig& cfg, const SurfaceFractions* surface,
+                                const grid::Decomposition& d, const grid::Halo& halo);
+
 /// Backward Euler for u and w (u, w: u_old on entry, u_new on return, per node) with the rigid
 /// velocities of the free bodies (mass > 0) as unknowns: M_b (s_b - s_b^n) / dt = F_b, F_b the
 /// viscous load of body b from the same legs (viscous_loads). Solved by superposition: the fluid
