@@ -170,8 +170,8 @@ ViscousExchange add_forces(const Layout& L, const fluid::FluidConfig& cfg, bool 
                                         L.halo);
       add_scaled(f.u, du, 1.0), add_scaled(f.w, dw, 1.0);
     }
-    const auto step =
-        fluid::apply_viscosity_implicit(f.u, f.w, f.cells, dt, cfg, L.d, L.halo, bodies);
+    const auto step = fluid::apply_viscosity_implicit(f.u, f.w, f.cells, dt, cfg, L.d, L.halo,
+                                                      bodies, cfg.viscous_beta);
     if (predict) add_scaled(f.u, du, -1.0), add_scaled(f.w, dw, -1.0);
     viscous = viscous_exchange(all, step.loads, dem, L.comm);
     f.viscous_wall_force = step.loads.wall_force;

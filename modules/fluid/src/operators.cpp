@@ -85,10 +85,12 @@ void declare_parameters(core::ParamSchema& schema) {
                   std::string("condition of the ") + side +
                       " tank wall on the tangential velocity; default: as fluid/walls "
                       "(doc/viscous.md)");
-  schema.string("fluid/viscosity_scheme", "explicit", {"explicit", "implicit"},
+  schema.string("fluid/viscosity_scheme", "explicit", {"explicit", "implicit", "crank_nicolson"},
                 "explicit: 5-point viscosity on faces between fluid cells, the time step held "
                 "below h^2 / (4 nu); implicit: backward Euler with no-slip at the true boundary of "
-                "solids and obstacles, whose viscous loads enter the solids' update "
+                "solids and obstacles, whose viscous loads enter the solids' update; "
+                "crank_nicolson: the same operator with the trapezoidal rule (second order in "
+                "time, hardly damps stiff modes; not with coupling/viscous_rigid_rows) "
                 "(doc/viscous.md)");
   schema.boolean("fluid/viscous_pressure_predictor", true,
                  "implicit scheme without coupling/viscous_rigid_rows: solve the viscosity for u + "
@@ -169,7 +171,9 @@ FluidConfig config_from(const core::Params& params) {
     const std::string v = params.string(std::string("fluid/wall_") + sides[s]);
     if (v != "default") c.wall_no_slip[s] = v == "no_slip";
   }
-  c.implicit_viscosity = params.string("fluid/viscosity_scheme") == "implicit";
+  const std::string scheme = params.string("fluid/viscosity_scheme");
+  c.implicit_viscosity = scheme != "explicit";
+  c.viscous_beta = scheme == "crank_nicolson" ? 0.5 : 1.0;
   c.viscous_pressure_predictor = params.boolean("fluid/viscous_pressure_predictor");
   c.h = params.real("grid/cell_size");
   c.open = open_boundaries_from(params, grid::spec_from(params));

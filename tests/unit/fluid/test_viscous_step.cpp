@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <vector>
 
 #include "fluid_test_support.hpp"
 #include "picdem/core/error.hpp"
@@ -69,6 +71,76 @@ TEST_P(ViscousStepTest, BackwardEulerInvertsApplyViscosity) {
 
 INSTANTIATE_TEST_SUITE_P(Walls, ViscousStepTest, ::testing::Values(false, true));
 
+namespace {
+
+/// Marches a smooth field in a closed no-slip box full of fluid (h = 0.1, 14 x 11 cells, nu =
+/// 0.02) to t = 1 with `steps` steps of apply_viscosity_implicit with implicit share beta; u
+/// then w, owned samples, summed over the ranks into one vector per component.
+std::vector<double> march(int steps, double beta) {
+  GridSpec s;
+  s.nx = 14, s.nz = 11, s.h = 0.1;
+  core::Comm comm;
+  Decomposition d(s, comm, 1);
+  Halo halo(d);
+  fluid::FluidConfig cfg;
+  cfg.no_slip = true;
+  cfg.nu = 0.02;
+  cfg.h = s.h;
+  fluid::CellStates cells(d, Stagger::Cell, static_cast<signed char>(CellState::Fluid));
+  FaceField u(d, Stagger::FaceX, 0.0), w(d, Stagger::FaceZ, 0.0);
+  const double L = s.nx * s.h, H = s.nz * s.h;
+  const auto& bu = u.owned();
+  for (int k = bu.k0; k < bu.k1; ++k)
+    for (int i = bu.i0; i < bu.i1; ++i)
+      u(i, k) = std::sin(M_PI * i * s.h / L) * std::sin(M_PI * (k + 0.5) * s.h / H);
+  const auto& bw = w.owned();
+  for (int k = bw.k0; k < bw.k1; ++k)
+    for (int i = bw.i0; i < bw.i1; ++i)
+      w(i, k) = std::sin(2.0 * M_PI * (i + 0.5) * s.h / L) * std::sin(M_PI * k * s.h / H);
+  halo.forward(u);
+  halo.forward(w);
+  fluid::enforce_walls(u, w, cfg, d);
+  for (int n = 0; n < steps; ++n)
+    fluid::apply_viscosity_implicit(u, w, cells, 1.0 / steps, cfg, d, halo, {}, beta);
+  const int nu_ = (s.nx + 1) * s.nz;
+  std::vector<double> all(static_cast<std::size_t>(nu_ + s.nx * (s.nz + 1)), 0.0);
+  for (int k = bu.k0; k < bu.k1; ++k)
+    for (int i = bu.i0; i < bu.i1; ++i) all[static_cast<std::size_t>(i + (s.nx + 1) * k)] = u(i, k);
+  for (int k = bw.k0; k < bw.k1; ++k)
+    for (int i = bw.i0; i < bw.i1; ++i) all[static_cast<std::size_t>(nu_ + i + s.nx * k)] = w(i, k);
+  comm.sum_in_place(all);
+  return all;
+}
+
+double max_difference(const std::vector<double>& a, const std::vector<double>& b) {
+  double m = 0.0;
+  for (std::size_t n = 0; n < a.size(); ++n) m = std::max(m, std::abs(a[n] - b[n]));
+  return m;
+}
+
+}  // namespace
+
+// fluid/viscosity_scheme crank_nicolson on the step's fields: errors at t = 1 against 256 steps of
+// the same scheme fall at second order with dt (backward Euler: first order), nu dt / h^2 = 0.5
+// and 0.25 at 4 and 8 steps.
+TEST(ViscousScheme, CrankNicolsonStepIsSecondOrderInTime) {
+  core::Comm comm;
+  const auto ref_cn = march(256, 0.5), ref_be = march(256, 1.0);
+  const double cn4 = max_difference(march(4, 0.5), ref_cn),
+               cn8 = max_difference(march(8, 0.5), ref_cn);
+  const double be4 = max_difference(march(4, 1.0), ref_be),
+               be8 = max_difference(march(8, 1.0), ref_be);
+  const double order_cn = std::log2(cn4 / cn8), order_be = std::log2(be4 / be8);
+  if (comm.is_root())
+    std::printf(
+        "step-level free decay to t = 1: Crank-Nicolson %.3e, %.3e (order %.2f); backward "
+        "Euler %.3e, %.3e (order %.2f) at 4, 8 steps\n",
+        cn4, cn8, order_cn, be4, be8, order_be);
+  EXPECT_GT(order_cn, 1.8);
+  EXPECT_LT(order_be, 1.3);
+  EXPECT_LT(cn8, be8);
+}
+
 TEST(ViscousScheme, KeyAndTimeStepLimit) {
   // Default explicit: the limit h^2 / (4 nu); implicit: none (infinity).
   const auto expl =
@@ -79,6 +151,12 @@ TEST(ViscousScheme, KeyAndTimeStepLimit) {
       0.1, 0.1, 0.001, {"fluid/viscosity=1e-3", "fluid/viscosity_scheme=implicit"}));
   EXPECT_TRUE(impl.implicit_viscosity);
   EXPECT_TRUE(std::isinf(fluid::viscous_time_limit(impl)));
+  EXPECT_DOUBLE_EQ(impl.viscous_beta, 1.0);
+  const auto cn = fluid::config_from(fluid_test::tank_params(
+      0.1, 0.1, 0.001, {"fluid/viscosity=1e-3", "fluid/viscosity_scheme=crank_nicolson"}));
+  EXPECT_TRUE(cn.implicit_viscosity);
+  EXPECT_DOUBLE_EQ(cn.viscous_beta, 0.5);
+  EXPECT_TRUE(std::isinf(fluid::viscous_time_limit(cn)));
   EXPECT_THROW(fluid::config_from(
                    fluid_test::tank_params(0.1, 0.1, 0.001, {"fluid/viscosity_scheme=crank"})),
                core::InputError);

@@ -41,7 +41,9 @@ struct FluidConfig {
   bool no_slip = false;      ///< tank walls: no-slip (true) or free-slip (false)
   /// Per wall (left, right, bottom, top): its own condition, overriding no_slip; empty: no_slip.
   std::array<std::optional<bool>, 4> wall_no_slip{};
-  bool implicit_viscosity = false;  ///< fluid/viscosity_scheme: implicit (doc/viscous.md)
+  bool implicit_viscosity = false;  ///< fluid/viscosity_scheme: implicit or crank_nicolson
+  /// The implicit share beta of the theta scheme: 1 backward Euler (implicit), 1/2 Crank-Nicolson
+  double viscous_beta = 1.0;
   /// fluid/viscous_pressure_predictor: the implicit viscous solve takes u + dt (g - grad p^n / rho)
   /// and removes it after (viscous_pressure_predictor, doc/viscous.md)
   bool viscous_pressure_predictor = true;
