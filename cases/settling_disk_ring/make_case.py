@@ -69,6 +69,7 @@ fluid:
   viscosity: 1.0e-2
   walls: no_slip
   viscosity_scheme: implicit
+  viscous_pressure_predictor: true
 solids:
   disk:
     type: disk

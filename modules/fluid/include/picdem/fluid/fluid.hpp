@@ -46,7 +46,7 @@ struct FluidConfig {
   double viscous_beta = 1.0;
   /// fluid/viscous_pressure_predictor: the implicit viscous solve takes u + dt (g - grad p^n / rho)
   /// and removes it after (viscous_pressure_predictor, doc/viscous.md)
-  bool viscous_pressure_predictor = true;
+  bool viscous_pressure_predictor = false;
   double h = 0.0;       ///< cell size [m] (grid/cell_size)
   OpenBoundaries open;  ///< open/ keys: inflow and outflow sides (open_boundary.hpp)
   /// Per obstacle, in the case's order: obstacles/<name>/wall is free_slip (implicit viscosity,
