@@ -107,7 +107,7 @@ void declare_parameters(core::ParamSchema& schema) {
   schema.boolean("solver/rebalance", true,
                  "split the pressure unknowns evenly over the ranks for the solve (the grid "
                  "blocks hold unequal numbers of fluid cells)");
-  schema.string("solver/coupling_operator", "assembled", {"assembled", "low_rank"},
+  schema.string("solver/coupling_operator", "low_rank", {"assembled", "low_rank"},
                 "assembled: the solids' dense blocks dt A_s M_s^-1 A_s^T in the pressure matrix "
                 "(solver/MueLu_solids applies); low_rank: kept beside it and applied as a low-rank "
                 "term in CG, MueLu built on the fluid rows plus the blocks' diagonal "

@@ -35,7 +35,8 @@ struct CoupledSystem {
   std::vector<fluid::SolidCoupling> solids;
 
   explicit CoupledSystem(const core::Comm& comm)
-      : assembled(fluid_test::tank_params(1.0, 0.5, 0.0125, {"solver/tolerance=1e-11"})),
+      : assembled(fluid_test::tank_params(
+            1.0, 0.5, 0.0125, {"solver/tolerance=1e-11", "solver/coupling_operator=assembled"})),
         low_rank(fluid_test::tank_params(
             1.0, 0.5, 0.0125, {"solver/tolerance=1e-11", "solver/coupling_operator=low_rank"})),
         s(spec_from(assembled)),
