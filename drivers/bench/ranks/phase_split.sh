@@ -11,18 +11,8 @@
 #
 # usage: [BASE=exe] drivers/bench/ranks/phase_split.sh [PICDEM] [ROUNDS] [END] [CASE] [-- --set ...]
 set -euo pipefail
-picdem=${1:-build/drivers/picdem}
-rounds=${2:-3}
-end=${3:-0.03}
-case_file=${4:-cases/dam_break_cylinders_6_layers/case.yaml}
-shift $(($# < 4 ? $# : 4))
-[ "${1:-}" = "--" ] && shift
-extra=("$@")
-mpi=(mpirun --oversubscribe)
-[ "$(id -u)" = 0 ] && mpi+=(--allow-run-as-root)
-work=$(mktemp -d "${PICDEM_BENCH_DIR:-/tmp}/picdem_phase_split.XXXXXX")
-common=(--set "time/end=$end" --set output/paraview=false --set output/png=false
-        --set checkpoint/at_end=false "${extra[@]}")
+bench_name=phase_split default_end=0.03
+source "$(dirname "$0")/bench_args.sh"
 phases=("geometry" "transfer: mark cells" "transfer: particles to grid" "forces"
         "contact prediction" "pressure" "project" "solids" "transfer: grid to particles"
         "density correction" "advect")

@@ -9,18 +9,8 @@
 #   END     simulated end time in seconds (default 0.05)
 #   CASE    case file (default cases/dam_break_cylinders_6_layers/case.yaml)
 set -euo pipefail
-picdem=${1:-build/drivers/picdem}
-rounds=${2:-3}
-end=${3:-0.05}
-case_file=${4:-cases/dam_break_cylinders_6_layers/case.yaml}
-shift $(($# < 4 ? $# : 4))
-[ "${1:-}" = "--" ] && shift
-extra=("$@")
-mpi=(mpirun --oversubscribe)
-[ "$(id -u)" = 0 ] && mpi+=(--allow-run-as-root)
-work=$(mktemp -d /tmp/picdem_ranks_speedup.XXXXXX)
-common=(--set "time/end=$end" --set output/paraview=false --set output/png=false
-        --set checkpoint/at_end=false "${extra[@]}")
+bench_name=ranks_speedup default_end=0.05
+source "$(dirname "$0")/bench_args.sh"
 
 # run NAME RANKS MODE -> prints the wall seconds of one run
 run() {

@@ -18,18 +18,33 @@
 using namespace picdem;
 using namespace picdem::grid;
 
+namespace {
+
+/// The closed box both tests use: 14 x 11 cells of h = 0.1 on the communicator's ranks, nu = 0.02.
+struct ViscousBox {
+  GridSpec s = [] {
+    GridSpec g;
+    g.nx = 14, g.nz = 11, g.h = 0.1;
+    return g;
+  }();
+  core::Comm comm;
+  Decomposition d{s, comm, 1};
+  Halo halo{d};
+  fluid::FluidConfig cfg;
+  explicit ViscousBox(bool no_slip) {
+    cfg.no_slip = no_slip;
+    cfg.nu = 0.02;
+    cfg.h = s.h;
+  }
+};
+
+}  // namespace
+
 class ViscousStepTest : public ::testing::TestWithParam<bool> {};
 
 TEST_P(ViscousStepTest, BackwardEulerInvertsApplyViscosity) {
-  GridSpec s;
-  s.nx = 14, s.nz = 11, s.h = 0.1;
-  core::Comm comm;
-  Decomposition d(s, comm, 1);
-  Halo halo(d);
-  fluid::FluidConfig cfg;
-  cfg.no_slip = GetParam();
-  cfg.nu = 0.02;
-  cfg.h = s.h;
+  ViscousBox box(GetParam());
+  auto& [s, comm, d, halo, cfg] = box;
   // Fluid below k = 8 (air above), a dry notch at the right.
   fluid::CellStates cells(d, Stagger::Cell, static_cast<signed char>(CellState::Air));
   const auto& cb = cells.storage();
@@ -77,15 +92,8 @@ namespace {
 /// 0.02) to t = 1 with `steps` steps of apply_viscosity_implicit with implicit share beta; u
 /// then w, owned samples, summed over the ranks into one vector per component.
 std::vector<double> march(int steps, double beta) {
-  GridSpec s;
-  s.nx = 14, s.nz = 11, s.h = 0.1;
-  core::Comm comm;
-  Decomposition d(s, comm, 1);
-  Halo halo(d);
-  fluid::FluidConfig cfg;
-  cfg.no_slip = true;
-  cfg.nu = 0.02;
-  cfg.h = s.h;
+  ViscousBox box(true);
+  auto& [s, comm, d, halo, cfg] = box;
   fluid::CellStates cells(d, Stagger::Cell, static_cast<signed char>(CellState::Fluid));
   FaceField u(d, Stagger::FaceX, 0.0), w(d, Stagger::FaceZ, 0.0);
   const double L = s.nx * s.h, H = s.nz * s.h;
