@@ -5,12 +5,12 @@
 // default 1e-4 the ranks' particles differ by ~1e-8 m after that solve, enough to put a front
 // particle on either side of a cell face, flip the cell between fluid and air on one rank count
 // and move the volume by 3e-6 at single steps, a difference of the solver tolerance, not of the
-// decomposition; doc/validation.md). Cylinders in contact now sit on different ranks, where the contact sums are
-// added in another order; the stiff contacts (35 DEM subcycles per step) carry that round-off
-// further than in CoupledRanks (whose 2 ranks leave every cylinder on one rank). Measured on 2 to
-// 4 ranks: positions 1.7e-9 to 1.0e-8 m, velocities 5.5e-7 to 1.1e-6 m/s; asserted: positions
-// within 1e-7 m (2e-5 of a cylinder radius), velocities within 1e-5 m/s, fluid volume within 1e-6
-// relative.
+// decomposition; doc/validation.md). Cylinders in contact now sit on different ranks, where the
+// contact sums are added in another order; the stiff contacts (35 DEM subcycles per step) carry
+// that round-off further than in CoupledRanks (whose 2 ranks leave every cylinder on one rank).
+// Measured on 2 to 4 ranks (2026-12-02): positions 1.7e-9 to 9.3e-9 m, velocities 5.3e-7 to
+// 1.0e-6 m/s, fluid volume 1.7e-9 to 2.5e-8 relative; asserted: positions within 1e-7 m (2e-5 of a
+// cylinder radius), velocities within 1e-5 m/s, fluid volume within 1e-6 relative.
 #include <gtest/gtest.h>
 
 #include <algorithm>
