@@ -1,7 +1,6 @@
 #include "picdem/coupling/simulation.hpp"
 
 #include "step_phases.hpp"
-#include "viscous_bodies.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -54,7 +53,7 @@ struct Simulation::Impl {
   long long step = 0;
   Diagnostics diag;
   std::vector<core::SolidLoads> fluid_loads;     // J p + F_q of the last step, by id (all ranks)
-  ViscousExchange viscous;                       // the last step's viscous loads (implicit scheme)
+  fluid::ViscousExchange viscous;                // the last step's viscous loads (implicit scheme)
   std::vector<core::SolidLoads> obstacle_loads;  // J p + F_q of the last step, every obstacle
 
   Layout layout() const { return {*decomp, *halo, comm}; }
@@ -217,7 +216,8 @@ void Simulation::step() {
                            set.ghost_fluid ? &m.fluid.surface : nullptr, m.fluid);  // forces
     auto collision = predict_contacts(m.dem.get(), dt);                             // contact
     // eq. 6: the viscous loads join the p-independent loads of V* (doc/viscous.md)
-    if (m.dem && !m.viscous.solids.empty()) collision = plus_viscous(collision, m.viscous, *m.dem);
+    if (m.dem && !m.viscous.solids.empty())
+      collision = fluid::plus_viscous(collision, m.viscous, m.dem->owned());
     solve = solve_pressure(L, set, solids, collision, dt, *m.pressure, m.fluid);  // pressure
     project(L, set, dt, m.fluid);                                                 // project
     if (set.fluid.open.any())  // volumes through the open sides (doc/open_boundaries.md)

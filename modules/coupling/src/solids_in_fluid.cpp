@@ -25,6 +25,17 @@ SolidScene scene_of(const dem::DemSolver* dem, const std::vector<geometry::Obsta
   return scene;
 }
 
+SolidScene scene_of_all(const dem::DemSolver* dem,
+                        const std::vector<geometry::Obstacle>& obstacles) {
+  SolidScene scene;
+  scene.obstacles = obstacles;
+  if (!dem) return scene;
+  scene.states = dem->gather_all();
+  for (const auto& st : scene.states)
+    scene.placements.push_back({st.id, dem->shape_of(st.id), {st.x, st.theta}});
+  return scene;
+}
+
 int SolidScene::index_of(std::int64_t id) const {
   const auto it =
       std::lower_bound(states.begin(), states.end(), id,

@@ -6,7 +6,6 @@
 #include <limits>
 #include <sstream>
 
-#include "open_particles.hpp"
 #include "picdem/core/error.hpp"
 #include "picdem/core/timer.hpp"
 #include "picdem/dem/figures.hpp"
@@ -14,10 +13,10 @@
 #include "picdem/fluid/bodies.hpp"
 #include "picdem/fluid/free_surface.hpp"
 #include "picdem/fluid/open_flow.hpp"
+#include "picdem/fluid/open_particles.hpp"
 #include "picdem/fluid/viscous.hpp"
 #include "picdem/particles/figures.hpp"
 #include "picdem/particles/particles.hpp"
-#include "viscous_bodies.hpp"
 
 namespace picdem::coupling {
 
@@ -138,6 +137,12 @@ void particles_to_grid(const Layout& L, const StepSettings& set, const SolidsAtS
 
 namespace {
 
+// The solids `dem` owns (none without a DEM).
+const std::vector<core::SolidState>& owned_solids(const dem::DemSolver* dem) {
+  static const std::vector<core::SolidState> none;
+  return dem ? dem->owned() : none;
+}
+
 void add_scaled(grid::FaceField& a, const grid::FaceField& b, double s) {
   const auto& box = a.storage();
   for (int k = box.k0; k < box.k1; ++k)
@@ -147,17 +152,17 @@ void add_scaled(grid::FaceField& a, const grid::FaceField& b, double s) {
 }  // namespace
 
 // Viscosity explicit, or implicit at the true boundaries of every solid (at X^n) and obstacle.
-ViscousExchange add_forces(const Layout& L, const fluid::FluidConfig& cfg, bool rigid_rows,
-                           const dem::DemSolver* dem,
-                           const std::vector<geometry::Obstacle>& obstacles, double dt,
-                           const fluid::SurfaceFractions* surface, fluid::FluidState& f) {
+fluid::ViscousExchange add_forces(const Layout& L, const fluid::FluidConfig& cfg, bool rigid_rows,
+                                  const dem::DemSolver* dem,
+                                  const std::vector<geometry::Obstacle>& obstacles, double dt,
+                                  const fluid::SurfaceFractions* surface, fluid::FluidState& f) {
   core::ScopedTimer timer("forces");
-  ViscousExchange viscous;
+  fluid::ViscousExchange viscous;
   if (cfg.implicit_viscosity) {
     // Viscosity on u^n, then gravity: the implicit solve would diffuse g dt against the walls and
     // bodies into a rotational field the projection cannot remove (doc/viscous.md).
     const SolidScene all = scene_of_all(dem, obstacles);
-    auto bodies = viscous_bodies(all, rigid_rows);
+    auto bodies = fluid::viscous_bodies(all.placements, all.states, all.obstacles, rigid_rows);
     for (std::size_t o = 0; o < cfg.obstacle_free_slip.size(); ++o)  // obstacles/<name>/wall
       bodies[all.placements.size() + o].free_slip = cfg.obstacle_free_slip[o] != 0;
     // With the pressure predictor the solve takes u + du, du = dt (g - grad p^n / rho), and
@@ -173,7 +178,8 @@ ViscousExchange add_forces(const Layout& L, const fluid::FluidConfig& cfg, bool 
     const auto step = fluid::apply_viscosity_implicit(f.u, f.w, f.cells, dt, cfg, L.d, L.halo,
                                                       bodies, cfg.viscous_beta);
     if (predict) add_scaled(f.u, du, -1.0), add_scaled(f.w, dw, -1.0);
-    viscous = viscous_exchange(all, step.loads, dem, L.comm);
+    viscous = fluid::viscous_exchange(all.states, all.obstacles.size(), step.loads,
+                                      owned_solids(dem), L.comm);
     f.viscous_wall_force = step.loads.wall_force;
     fluid::apply_gravity(f.u, f.w, f.cells, dt, cfg);  // on owned faces: the halo follows
     L.halo.forward_all({&f.u, &f.w});
@@ -218,11 +224,13 @@ void project(const Layout& L, const StepSettings& set, double dt, fluid::FluidSt
 // then K DEM subcycles with it fixed (the DEM takes the loads of the solids it owns).
 std::vector<core::SolidLoads> advance_solids(const fluid::PressureSolver* pressure,
                                              const fluid::FluidState* fluid, double dt,
-                                             const ViscousExchange& viscous, dem::DemSolver& dem) {
+                                             const fluid::ViscousExchange& viscous,
+                                             dem::DemSolver& dem) {
   core::ScopedTimer timer("solids");
   std::vector<core::SolidLoads> loads;
   if (pressure && fluid) loads = pressure->solid_loads(fluid->p);
-  dem.advance(dt, viscous.solids.empty() ? loads : plus_viscous(loads, viscous, dem));
+  dem.advance(dt,
+              viscous.solids.empty() ? loads : fluid::plus_viscous(loads, viscous, dem.owned()));
   return loads;
 }
 
@@ -336,10 +344,16 @@ void advect_particles(const Layout& L, const StepSettings& set, long long step,
     throw core::SolverError(first);
   }
   if (set.fluid.open.any()) {  // open sides: out through the outflows, in through the inflows
-    remove_outflow_particles(particles, set.fluid.open, set.spec);
+    std::vector<char> keep(particles.size(), 1);
+    if (fluid::mark_outflow_particles(particles.x, particles.z, set.fluid.open, set.spec, keep) > 0)
+      particles.keep_if(keep);
     std::function<bool(Vec2)> inside;
     if (solids) inside = [&](Vec2 p) { return locator.inside(p); };
-    inject_inflow_particles(particles, set.particles, set.fluid.open, L.d, inside);
+    const fluid::InflowSeeding seeding{set.particles.per_cell_1d, set.particles.jitter,
+                                       set.particles.seed};
+    const double zero[4] = {0.0, 0.0, 0.0, 0.0};
+    for (const auto& q : fluid::inflow_particles(seeding, set.fluid.open, L.d, inside))
+      particles.push_back(q.id, q.position, q.velocity, zero);
   }
   particles::migrate(particles, L.d);
   grid::GridArray<int> count(L.d, Stagger::Cell, 0);

@@ -13,12 +13,12 @@
 #include "picdem/fluid/fluid.hpp"
 #include "picdem/fluid/fluid_state.hpp"
 #include "picdem/fluid/pressure_solver.hpp"
+#include "picdem/fluid/viscous_bodies.hpp"
 #include "picdem/geometry/cut_cells.hpp"
 #include "picdem/grid/field.hpp"
 #include "picdem/particles/occupancy_pass.hpp"
 #include "picdem/particles/particle_set.hpp"
 #include "picdem/particles/transfer.hpp"
-#include "viscous_bodies.hpp"
 
 namespace picdem::coupling {
 
@@ -98,10 +98,10 @@ void particles_to_grid(const Layout& L, const StepSettings& set, const SolidsAtS
 /// `rigid_rows` (with fluid/viscous_pressure_predictor on u + dt (g - grad p^n / rho), taken off
 /// after; `surface`: the ghost fluid's, as for the projection); returns the implicit scheme's
 /// viscous loads (empty for the explicit one).
-ViscousExchange add_forces(const Layout& L, const fluid::FluidConfig& cfg, bool rigid_rows,
-                           const dem::DemSolver* dem,
-                           const std::vector<geometry::Obstacle>& obstacles, double dt,
-                           const fluid::SurfaceFractions* surface, fluid::FluidState& fluid);
+fluid::ViscousExchange add_forces(const Layout& L, const fluid::FluidConfig& cfg, bool rigid_rows,
+                                  const dem::DemSolver* dem,
+                                  const std::vector<geometry::Obstacle>& obstacles, double dt,
+                                  const fluid::SurfaceFractions* surface, fluid::FluidState& fluid);
 
 /// contact: collision loads predicted at level n with dt in eq. 8 (none without solids).
 std::vector<core::SolidLoads> predict_contacts(const dem::DemSolver* dem, double dt);
@@ -121,7 +121,8 @@ void project(const Layout& L, const StepSettings& set, double dt, fluid::FluidSt
 /// every solid with rows, by id, the same on every rank.
 std::vector<core::SolidLoads> advance_solids(const fluid::PressureSolver* pressure,
                                              const fluid::FluidState* fluid, double dt,
-                                             const ViscousExchange& viscous, dem::DemSolver& dem);
+                                             const fluid::ViscousExchange& viscous,
+                                             dem::DemSolver& dem);
 
 /// transfer: grid -> particles with the solids at X^{n+1} on covered faces, then gap damping
 /// (eq. 20) at the contacts of X^{n+1}.

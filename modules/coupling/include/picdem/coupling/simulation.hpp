@@ -53,8 +53,8 @@ struct Diagnostics {
 };
 
 /// One row of forces.csv (doc/output.md): the fluid's loads on a solid or obstacle over the last
-/// step, per unit depth. Pressure: J p^{n+1} + F_q (eq. 6); viscous: ViscousExchange (zero with
-/// the explicit scheme). Torques about the solid's centre of mass, an obstacle's about (0, 0).
+/// step, per unit depth. Pressure: J p^{n+1} + F_q (eq. 6); viscous: fluid::ViscousExchange (zero
+/// with the explicit scheme). Torques about the solid's centre of mass, an obstacle's about (0, 0).
 /// The viscous force on the tank walls: fluid::FluidState::viscous_wall_force.
 struct BodyForces {
   std::int64_t id = 0;                                 ///< solid id, or obstacle index

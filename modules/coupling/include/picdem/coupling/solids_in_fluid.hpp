@@ -31,6 +31,12 @@ struct SolidScene {
 
 SolidScene scene_of(const dem::DemSolver* dem, const std::vector<geometry::Obstacle>& obstacles);
 
+/// Collective: every solid of the run (gathered from their owners, ordered by id) and the
+/// obstacles: the scene of the replicated implicit viscous solve, in which every rank solves
+/// the whole grid and so must see every solid.
+SolidScene scene_of_all(const dem::DemSolver* dem,
+                        const std::vector<geometry::Obstacle>& obstacles);
+
 /// The states in `after` of the solids of `before`, in before's order (the bodies of cut cells
 /// built from `before`), matched by id; a solid `after` does not hold keeps its state in before.
 std::vector<core::SolidState> motions_at(const SolidScene& before, const SolidScene& after);

@@ -1,5 +1,5 @@
 // Particles at the open tank sides (open_particles.hpp).
-#include "open_particles.hpp"
+#include "picdem/fluid/open_particles.hpp"
 
 #include <algorithm>
 #include <array>
@@ -8,10 +8,9 @@
 
 #include "picdem/core/rng.hpp"
 
-namespace picdem::coupling {
+namespace picdem::fluid {
 
 using core::Vec2;
-using fluid::OpenKind;
 
 namespace {
 
@@ -45,35 +44,34 @@ std::array<int, 2> boundary_cell(const grid::GridSpec& g, std::size_t side, int 
 
 }  // namespace
 
-std::size_t remove_outflow_particles(particles::ParticleSet& p, const fluid::OpenBoundaries& open,
-                                     const grid::GridSpec& g) {
+std::size_t mark_outflow_particles(const std::vector<double>& x, const std::vector<double>& z,
+                                   const OpenBoundaries& open, const grid::GridSpec& g,
+                                   std::vector<char>& keep) {
   // advect holds a leaving particle 1e-6 h inside the side: within 2e-6 h it has left
   const double band = 2e-6 * g.h;
   const double lo[4] = {g.origin.x, g.origin.x + g.length(), g.origin.z, g.origin.z + g.height()};
-  std::vector<char> keep(p.size(), 1);
   std::size_t removed = 0;
   for (std::size_t side = 0; side < 4; ++side) {
-    const fluid::OpenSide& s = open.side[side];
+    const OpenSide& s = open.side[side];
     if (s.kind != OpenKind::Outflow) continue;
-    for (std::size_t n = 0; n < p.size(); ++n) {
-      const double normal = side < 2 ? p.x[n] : p.z[n], along = side < 2 ? p.z[n] : p.x[n];
+    for (std::size_t n = 0; n < x.size(); ++n) {
+      const double normal = side < 2 ? x[n] : z[n], along = side < 2 ? z[n] : x[n];
       if (!keep[n] || std::abs(normal - lo[side]) > band) continue;
       // the face holding the particle must be open
       const int f =
           static_cast<int>(std::floor((along - (side < 2 ? g.origin.z : g.origin.x)) / g.h));
-      const int nf = fluid::side_faces(g, side);
-      if (!s.open_at(fluid::face_position(g, side, std::clamp(f, 0, nf - 1)))) continue;
+      const int nf = side_faces(g, side);
+      if (!s.open_at(face_position(g, side, std::clamp(f, 0, nf - 1)))) continue;
       keep[n] = 0;
       ++removed;
     }
   }
-  if (removed > 0) p.keep_if(keep);
   return removed;
 }
 
-std::size_t inject_inflow_particles(particles::ParticleSet& p, const particles::ParticleConfig& c,
-                                    const fluid::OpenBoundaries& open, const grid::Decomposition& d,
-                                    const std::function<bool(Vec2)>& reject) {
+std::vector<InflowParticle> inflow_particles(const InflowSeeding& c, const OpenBoundaries& open,
+                                             const grid::Decomposition& d,
+                                             const std::function<bool(Vec2)>& reject) {
   const grid::GridSpec& g = d.spec();
   const core::IndexBox own = d.owned_cells();
   const int n1 = c.per_cell_1d;
@@ -81,16 +79,15 @@ std::size_t inject_inflow_particles(particles::ParticleSet& p, const particles::
   const auto n_max = static_cast<std::int64_t>(std::max(g.nx, g.nz));
   // a seed of its own: the virtual columns never repeat the initial or reseeded positions
   const std::uint64_t seed = core::hash_counters(c.seed, 0x696e666c6f770000ULL);
-  const double zero[4] = {0.0, 0.0, 0.0, 0.0};
-  std::size_t added = 0;
+  std::vector<InflowParticle> added;
   for (std::size_t side = 0; side < 4; ++side) {
-    const fluid::OpenSide& s = open.side[side];
+    const OpenSide& s = open.side[side];
     if (s.kind != OpenKind::Inflow) continue;
     const double s_origin = side < 2 ? g.origin.z : g.origin.x;
     const double sign = side == 0 || side == 2 ? 1.0 : -1.0;
-    for (int f = 0; f < fluid::side_faces(g, side); ++f) {
+    for (int f = 0; f < side_faces(g, side); ++f) {
       const auto [bi, bk] = boundary_cell(g, side, f);
-      if (!own.contains(bi, bk) || !s.open_at(fluid::face_position(g, side, f))) continue;
+      if (!own.contains(bi, bk) || !s.open_at(face_position(g, side, f))) continue;
       const double s0 = s_origin + f * g.h, s1 = s0 + g.h;
       // columns j whose particles (normal coordinate in [-(j + 1) h, -j h]) may cross the side
       const auto before = s.displacement_bounds(s0, s1, open.t0);
@@ -119,8 +116,7 @@ std::size_t inject_inflow_particles(particles::ParticleSet& p, const particles::
             const Vec2 vel = side < 2 ? Vec2{v, 0.0} : Vec2{0.0, v};
             const auto id =
                 static_cast<std::int64_t>(cell) * n1 * n1 + static_cast<std::int64_t>(n);
-            p.push_back(-(1 + id), pos, vel, zero);
-            ++added;
+            added.push_back({-(1 + id), pos, vel});
           }
       }
     }
@@ -128,4 +124,4 @@ std::size_t inject_inflow_particles(particles::ParticleSet& p, const particles::
   return added;
 }
 
-}  // namespace picdem::coupling
+}  // namespace picdem::fluid
