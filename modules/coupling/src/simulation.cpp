@@ -200,8 +200,8 @@ void Simulation::step() {
   if (every > 0 && m.step > 0 && m.step % every == 0) rebalance_cuts(m);
   const Layout L = m.layout();
   fluid::FluidState* fluid = set.has_fluid ? &m.fluid : nullptr;
-  const double speed = cfl_extra_speed(set, m.particles, m.dem.get(), m.comm);
-  const double dt = choose_time_step(set, m.t, m.step, fluid, speed, m.comm);  // time step
+  const double speed = cfl_extra_speed(set, m.particles, m.dem.get(), m.comm);  // time step
+  const double dt = fluid::choose_time_step(set.time, set.fluid, m.t, m.step, fluid, speed, m.comm);
   m.set.fluid.open.t0 = m.t, m.set.fluid.open.t1 = m.t + dt;  // the inflows over this step
   fluid::OpenFluxes open_flux;
   SolidsAtStart solids;  // at X^n
@@ -255,28 +255,8 @@ const dem::DemSolver* Simulation::dem() const {
   return m_->dem.get();
 }
 
-// The rows of forces.csv: every solid by id once a step with water has given them pressure loads
-// (zero for a solid without rows; none in a dry run), then every obstacle; viscous loads zero
-// when the step computed none.
-std::vector<BodyForces> Simulation::body_forces() const {
-  const Impl& s = *m_;
-  auto of = [](const std::vector<core::SolidLoads>& by_id, std::int64_t id) {
-    const auto it =
-        std::lower_bound(by_id.begin(), by_id.end(), id,
-                         [](const core::SolidLoads& l, std::int64_t key) { return l.id < key; });
-    return it != by_id.end() && it->id == id ? *it : core::SolidLoads{id, {0.0, 0.0}, 0.0};
-  };
-  std::vector<BodyForces> rows;
-  if (s.dem && s.set.has_fluid)
-    for (const auto& st : s.dem->gather_all()) {
-      const auto p = of(s.fluid_loads, st.id), v = of(s.viscous.solids, st.id);
-      rows.push_back({st.id, false, p.force, v.force, p.torque, v.torque});
-    }
-  for (const auto& p : s.obstacle_loads) {
-    const auto v = of(s.viscous.obstacles, p.id);
-    rows.push_back({p.id, true, p.force, v.force, p.torque, v.torque});
-  }
-  return rows;
+StepLoads Simulation::last_loads() const {
+  return {m_->fluid_loads, m_->obstacle_loads, m_->viscous.solids, m_->viscous.obstacles};
 }
 
 const std::vector<geometry::Obstacle>& Simulation::obstacles() const {

@@ -29,11 +29,9 @@ StepSettings step_settings_from(const core::Params& params) {
   StepSettings s;
   s.spec = grid::spec_from(params);
   s.particles = particles::config_from(params);
-  s.cfl = params.real("time/cfl");
+  s.time = {s.spec.h, params.real("time/cfl"), params.real("time/dt_max"),
+            params.real("time/dt_min"), params.real("time/end")};
   s.cfl_from_particles = params.string("time/cfl_speed") == "particles";
-  s.dt_max = params.real("time/dt_max");
-  s.dt_min = params.real("time/dt_min");
-  s.t_end = params.real("time/end");
   s.has_fluid = !params.sublist_names("water").empty();
   s.beta = params.real("coupling/beta");
   s.viscous_rigid_rows = params.boolean("coupling/viscous_rigid_rows");
@@ -56,29 +54,6 @@ double cfl_extra_speed(const StepSettings& set, const particles::ParticleSet& pa
                        const dem::DemSolver* dem, const core::Comm& comm) {
   if (set.cfl_from_particles) return particles::max_speed(particles, comm);
   return dem ? dem::max_surface_speed(*dem, comm) : 0.0;  // dem: on every rank or on none
-}
-
-double choose_time_step(const StepSettings& set, double t, long long step,
-                        const fluid::FluidState* fluid, double speed, const core::Comm& comm) {
-  // The last step is not shortened to land on time/end: the run ends with the first step that
-  // reaches it, so a run continued to a later end takes the steps of one run made to that end.
-  const double dt_max = set.dt_max;
-  if (!fluid) return dt_max;
-  // time/cfl_speed particles: the particles may outrun the grid (FLIP): the fastest of either
-  // sets the CFL limit. grid: the particles move with the grid's velocity (advect), so that sets
-  // it, with the solids' surfaces, which move the cut cells (doc/coupling.md).
-  const double h = set.spec.h;
-  double dt =
-      std::min(dt_max, fluid::cfl_time_step(fluid->u, fluid->w, h, set.cfl, set.dt_max, comm));
-  dt = std::min(dt, fluid::viscous_time_limit(set.fluid));  // explicit viscosity's stability
-  if (speed > 0.0) dt = std::min(dt, set.cfl * h / speed);
-  if (!(dt >= set.dt_min) && set.t_end - t > set.dt_min) {
-    std::ostringstream m;
-    m << "step " << step << " at t = " << t << " s: the time step fell to " << dt
-      << " s (below time/dt_min): the flow has blown up";
-    throw core::SolverError(m.str());
-  }
-  return dt;
 }
 
 // Built on every rank of a run with bodies, also where none is near this step: a rank a solid

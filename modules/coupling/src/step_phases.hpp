@@ -13,6 +13,7 @@
 #include "picdem/fluid/fluid.hpp"
 #include "picdem/fluid/fluid_state.hpp"
 #include "picdem/fluid/pressure_solver.hpp"
+#include "picdem/fluid/time_step.hpp"
 #include "picdem/fluid/viscous_bodies.hpp"
 #include "picdem/geometry/cut_cells.hpp"
 #include "picdem/grid/field.hpp"
@@ -34,7 +35,7 @@ struct StepSettings {
   grid::GridSpec spec;
   fluid::FluidConfig fluid;
   particles::ParticleConfig particles;
-  double cfl = 0.5, dt_max = 0.0, dt_min = 0.0, t_end = 0.0;  ///< time/*
+  fluid::TimeStepLimits time;      ///< time/* (fluid::choose_time_step)
   bool cfl_from_particles = true;  ///< time/cfl_speed: particles (else grid and solids)
   bool has_fluid = false;
   bool has_solids = false;          ///< the run has a DEM (solids; or no water)
@@ -64,11 +65,6 @@ struct SolidsAtStart {
 /// (dem::max_surface_speed). Collective.
 double cfl_extra_speed(const StepSettings& set, const particles::ParticleSet& particles,
                        const dem::DemSolver* dem, const core::Comm& comm);
-
-/// time step: CFL on the grid velocity (fluid: nullptr without water) and on `speed`
-/// (cfl_extra_speed), capped by dt_max; a collapse below dt_min is a blown-up run.
-double choose_time_step(const StepSettings& set, double t, long long step,
-                        const fluid::FluidState* fluid, double speed, const core::Comm& comm);
 
 /// geometry: solids at X^n -> cut cells and the fluid's apertures E.
 SolidsAtStart place_solids(const Layout& L, const StepSettings& set, const dem::DemSolver* dem,

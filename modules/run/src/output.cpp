@@ -115,7 +115,7 @@ bool Output::forces_due(double t) const {
   return t >= next_forces_ - 1e-12 * std::max(1.0, forces_interval_);
 }
 
-void Output::forces(double t, const std::vector<coupling::BodyForces>& rows) {
+void Output::forces(double t, const std::vector<BodyForces>& rows) {
   for (const auto& r : rows)
     forces_->row({t, static_cast<double>(r.id), r.obstacle ? 1.0 : 0.0, r.pressure.x, r.pressure.z,
                   r.viscous.x, r.viscous.z, r.torque_pressure, r.torque_viscous});

@@ -73,7 +73,7 @@ void Run::run(long long max_steps) {
     check_step(diag, h, sim_.has_fluid(), grid_speed, sim_.dem(), comm);
     if (output_) {
       output_->record(diag);
-      if (output_->forces_due(sim_.time())) output_->forces(sim_.time(), sim_.body_forces());
+      if (output_->forces_due(sim_.time())) output_->forces(sim_.time(), body_forces(sim_));
       output_->frame(sim_, false);
     }
     progress.report(sim_.time(), sim_.step_count(), diag.dt, diag.ppe_iterations);

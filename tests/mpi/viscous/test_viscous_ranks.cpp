@@ -15,6 +15,7 @@
 #include "first_ranks.hpp"
 #include "picdem/coupling/simulation.hpp"
 #include "picdem/dem/dem_solver.hpp"
+#include "picdem/run/forces.hpp"
 
 using namespace picdem;
 
@@ -38,7 +39,7 @@ std::vector<double> run_on(int ranks, const std::vector<std::string>& split) {
     coupling::Simulation sim(comm, params);
     for (int n = 0; n < 20; ++n) sim.step();
     const auto st = sim.dem()->gather_all().at(0);
-    const auto v = sim.body_forces().at(0);
+    const auto v = run::body_forces(sim).at(0);
     out = {st.x.x, st.x.z, st.v.x, st.v.z, st.omega, v.viscous.x, v.viscous.z, v.torque_viscous};
   });
   test_support::broadcast_from_root(out, MPI_DOUBLE);

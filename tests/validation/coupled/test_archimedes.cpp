@@ -10,6 +10,7 @@
 #include "picdem/coupling/simulation.hpp"
 #include "picdem/dem/dem_solver.hpp"
 #include "picdem/fluid/fluid_state.hpp"
+#include "picdem/run/forces.hpp"
 #include "picdem/run/run.hpp"
 
 using namespace picdem;
@@ -152,7 +153,7 @@ TEST(Archimedes, NeutralDiskStaysPutAndLoadMatchesPressureIntegral) {
   while (sim.time() < t_end - 1e-12) {
     sim.step();
     excursion = std::max(excursion, core::norm(sim.dem()->gather_all().at(0).x - start.x));
-    worst_torque = std::max(worst_torque, std::abs(sim.body_forces().at(0).torque_pressure));
+    worst_torque = std::max(worst_torque, std::abs(run::body_forces(sim).at(0).torque_pressure));
   }
   const auto end = sim.dem()->gather_all().at(0);
   const double h = params.real("grid/cell_size"), r = 0.01, rho = 1000.0, g = 9.81;
@@ -169,7 +170,7 @@ TEST(Archimedes, NeutralDiskStaysPutAndLoadMatchesPressureIntegral) {
 
   // J p against an independent quadrature of -int p n dl: 720 points on the circle, p from the
   // fluid cell just outside each point, corrected hydrostatically to the point.
-  const auto row = sim.body_forces().at(0);  // the disk's pressure load J p + F_q
+  const auto row = run::body_forces(sim).at(0);  // the disk's pressure load J p + F_q
   const core::SolidLoads load{row.id, row.pressure, row.torque_pressure};
   core::Vec2 integral;
   const int n = 720;

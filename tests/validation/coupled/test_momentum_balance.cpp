@@ -18,6 +18,7 @@
 #include "picdem/dem/dem_solver.hpp"
 #include "picdem/fluid/fluid_state.hpp"
 #include "picdem/particles/particle_set.hpp"
+#include "picdem/run/forces.hpp"
 
 using namespace picdem;
 
@@ -61,7 +62,7 @@ Balance sinking_disk(const core::Comm& comm, const char* name, std::vector<std::
     b.impulse += d.dt * (f.wall_pressure_force(fluid::config_from(params)) + mass * g -
                          f.viscous_wall_force);
     b.gravity_on_disk += d.dt * solid_mass * g;
-    b.viscous_impulse_on_disk += d.dt * sim.body_forces().at(0).viscous;  // 0: explicit scheme
+    b.viscous_impulse_on_disk += d.dt * run::body_forces(sim).at(0).viscous;  // 0: explicit scheme
   }
   const auto disk = sim.dem()->gather_all().at(0);
   b.change = total_momentum(sim, comm, particle_mass) - P0;

@@ -22,6 +22,7 @@
 #include "case_loader.hpp"
 #include "picdem/coupling/simulation.hpp"
 #include "picdem/fluid/fluid_state.hpp"
+#include "picdem/run/forces.hpp"
 
 using namespace picdem;
 
@@ -45,7 +46,7 @@ double surface_pressure(const fluid::FluidState& f, double x, double dir, double
   return 0.5 * sum;
 }
 
-Figures run(double h) {
+Figures run_dfg(double h) {
   core::Comm comm(MPI_COMM_WORLD);
   const auto params = test_support::load_case(
       comm, "cases/dfg_2d1/case.yaml", {"grid/cell_size=" + std::to_string(h), "time/end=4.0"});
@@ -57,7 +58,7 @@ Figures run(double h) {
   while (sim.time() < 4.0 - 1e-9) {
     sim.step();
     if (sim.time() < 3.0 - 1e-9) continue;
-    for (const auto& b : sim.body_forces())
+    for (const auto& b : run::body_forces(sim))
       if (b.obstacle) {
         mean.cd += scale * (b.pressure.x + b.viscous.x);
         mean.cl += scale * (b.pressure.z + b.viscous.z);
@@ -79,6 +80,6 @@ Figures run(double h) {
 }  // namespace
 
 TEST(Dfg, Benchmark2D1DragConvergesTowardsTheReference) {
-  const Figures coarse = run(0.01), fine = run(0.005);
+  const Figures coarse = run_dfg(0.01), fine = run_dfg(0.005);
   EXPECT_LT(std::abs(fine.cd - kCd), std::abs(coarse.cd - kCd));
 }

@@ -52,15 +52,12 @@ struct Diagnostics {
   std::vector<double> open_volumes;
 };
 
-/// One row of forces.csv (doc/output.md): the fluid's loads on a solid or obstacle over the last
-/// step, per unit depth. Pressure: J p^{n+1} + F_q (eq. 6); viscous: fluid::ViscousExchange (zero
-/// with the explicit scheme). Torques about the solid's centre of mass, an obstacle's about (0, 0).
-/// The viscous force on the tank walls: fluid::FluidState::viscous_wall_force.
-struct BodyForces {
-  std::int64_t id = 0;                                 ///< solid id, or obstacle index
-  bool obstacle = false;                               ///< a fixed obstacle
-  core::Vec2 pressure, viscous;                        ///< [N/m]
-  double torque_pressure = 0.0, torque_viscous = 0.0;  ///< [N m/m]
+/// The fluid's loads on the solids and obstacles over the last step, per unit depth (forces.csv:
+/// run::body_forces), the same on every rank. Pressure: J p^{n+1} + F_q (eq. 6) of every solid
+/// with rows, by id (none in a dry run), and of every obstacle; viscous (fluid::ViscousExchange):
+/// every solid by id and every obstacle, empty with the explicit scheme.
+struct StepLoads {
+  std::vector<core::SolidLoads> pressure, obstacle_pressure, viscous, obstacle_viscous;
 };
 
 class Simulation {
@@ -123,9 +120,8 @@ class Simulation {
   /// The fixed obstacles of the case.
   const std::vector<geometry::Obstacle>& obstacles() const;
   bool has_fluid() const;
-  /// Collective: the fluid's loads of the last step on every solid (by id), then every obstacle
-  /// (the rows of forces.csv).
-  std::vector<BodyForces> body_forces() const;
+  /// The fluid's loads of the last step on the solids and obstacles.
+  StepLoads last_loads() const;
 
   /// The modules and the run's records (simulation.cpp); opaque outside it.
   struct Impl;

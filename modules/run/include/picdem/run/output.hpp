@@ -10,6 +10,7 @@
 #include "picdem/core/params.hpp"
 #include "picdem/coupling/simulation.hpp"
 #include "picdem/grid/grid.hpp"
+#include "picdem/run/forces.hpp"
 
 namespace picdem::io {
 class FrameWriter;
@@ -40,7 +41,7 @@ class Output {
   /// True when forces.csv takes the rows of time t (output/forces_interval; 0: every step).
   bool forces_due(double t) const;
   /// The rows of forces.csv at time t (rank 0 writes).
-  void forces(double t, const std::vector<coupling::BodyForces>& rows);
+  void forces(double t, const std::vector<BodyForces>& rows);
   /// Writes a frame of `sim`'s state when an output time is reached (or `force`).
   void frame(const coupling::Simulation& sim, bool force);
   /// The last state as a frame (unless the last frame holds it), the movie when output/movie
