@@ -109,11 +109,14 @@ def plot(rows, out):
     if plt is None:
         return
     fig, ax = plt.subplots(1, 2, figsize=(11, 4))
-    for mur, style in ((0.0, "ko-"), (0.1, "bs-")):
+    styles = ("ko-", "bs-", "mD-", "c^-", "yv-")
+    for mur, style in zip(sorted({r["mur"] for r in rows}), styles):
         sel = sorted((r for r in rows if r["mur"] == mur), key=lambda r: r["mu"])
-        if sel:
-            ax[0].plot([r["mu"] for r in sel], [r["angle"] for r in sel], style,
-                       label=f"picdem, 2D disks, mu_r = {mur:g}")
+        ax[0].plot([r["mu"] for r in sel], [r["angle"] for r in sel], style,
+                   label=f"picdem, 2D disks, mu_r = {mur:g}")
+        if mur > 0:  # the slope a constant rolling torque holds a lone disk on: tan = mu_r
+            ax[0].axhline(math.degrees(math.atan(mur)), color=style[0], ls=":", lw=0.8,
+                          label=f"atan(mu_r = {mur:g}) = {math.degrees(math.atan(mur)):.1f} deg")
     ax[0].plot([MPS_MU], [MPS_DEG], "r^", ms=9, label="Kim et al. 2018, MPS (22.3 deg)")
     ax[0].plot([MPS_MU], [MPS_DEM_DEG], "gv", ms=9, label="Kim et al. 2018, their DEM (22.5 deg)")
     mus = [0.05 + 0.01 * k for k in range(41)]
