@@ -2,6 +2,7 @@
 // viscous_operator.cpp, the solve of viscous_solver.cpp, scatter.
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "picdem/core/error.hpp"
 #include "picdem/core/timer.hpp"
@@ -97,8 +98,11 @@ ViscousStepResult apply_viscosity_implicit(grid::FaceField& u, grid::FaceField& 
   const ViscousWalls walls = viscous_walls_of(cfg);
   const std::vector<unsigned char> mask_u = fluid_node_mask(0, states, g);
   const std::vector<unsigned char> mask_w = fluid_node_mask(1, states, g);
+  auto stencil_timer = std::make_unique<core::ScopedTimer>("fluid: implicit viscosity: stencil");
   const ViscousStencil su = build_viscous_stencil(0, vg, bodies, walls, &mask_u);
   const ViscousStencil sw = build_viscous_stencil(1, vg, bodies, walls, &mask_w);
+  stencil_timer.reset();
+  core::ScopedTimer solve_timer("fluid: implicit viscosity: solve");
   std::vector<double> ug = gather(u, d), wg = gather(w, d);
   const bool rigid_rows =
       std::any_of(bodies.begin(), bodies.end(), [](const ViscousBody& b) { return b.mass > 0.0; });
