@@ -1,5 +1,7 @@
 #include "picdem/core/comm.hpp"
 
+#include "picdem/core/error.hpp"
+
 namespace picdem::core {
 
 int Comm::rank() const {
@@ -78,6 +80,16 @@ std::vector<double> Comm::all_gather(const std::vector<double>& mine) const {
   MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, out.data(), counts.data(), displs.data(), MPI_DOUBLE,
                  comm_);
   return out;
+}
+
+void Comm::throw_if_any(const std::string& failure) const {
+  if (!any(!failure.empty())) return;
+  std::string first = failure;
+  for (int r = 0; r < size(); ++r) {
+    const std::string theirs = broadcast(failure, r);
+    if (first.empty() && !theirs.empty()) first = theirs;
+  }
+  throw SolverError(first);
 }
 
 }  // namespace picdem::core

@@ -3,9 +3,6 @@
 #include "step_phases.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
-#include <sstream>
 #include <stdexcept>
 
 #include "picdem/core/error.hpp"
@@ -28,9 +25,6 @@
 namespace picdem::coupling {
 
 using core::Vec2;
-using grid::CellState;
-using grid::FaceField;
-using grid::Stagger;
 
 // The modules and the run's records; the step's phases (step_phases.hpp) get what each needs.
 struct Simulation::Impl {

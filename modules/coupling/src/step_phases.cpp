@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <limits>
 #include <sstream>
 
 #include "picdem/core/error.hpp"
@@ -14,7 +13,7 @@
 #include "picdem/fluid/free_surface.hpp"
 #include "picdem/fluid/open_flow.hpp"
 #include "picdem/fluid/open_particles.hpp"
-#include "picdem/fluid/viscous.hpp"
+#include "picdem/fluid/step_forces.hpp"
 #include "picdem/particles/figures.hpp"
 #include "picdem/particles/particles.hpp"
 
@@ -118,12 +117,6 @@ const std::vector<core::SolidState>& owned_solids(const dem::DemSolver* dem) {
   return dem ? dem->owned() : none;
 }
 
-void add_scaled(grid::FaceField& a, const grid::FaceField& b, double s) {
-  const auto& box = a.storage();
-  for (int k = box.k0; k < box.k1; ++k)
-    for (int i = box.i0; i < box.i1; ++i) a(i, k) += s * b(i, k);
-}
-
 }  // namespace
 
 // Viscosity explicit, or implicit at the true boundaries of every solid (at X^n) and obstacle.
@@ -132,38 +125,14 @@ fluid::ViscousExchange add_forces(const Layout& L, const fluid::FluidConfig& cfg
                                   const std::vector<geometry::Obstacle>& obstacles, double dt,
                                   const fluid::SurfaceFractions* surface, fluid::FluidState& f) {
   core::ScopedTimer timer("forces");
-  fluid::ViscousExchange viscous;
-  if (cfg.implicit_viscosity) {
-    // Viscosity on u^n, then gravity: the implicit solve would diffuse g dt against the walls and
-    // bodies into a rotational field the projection cannot remove (doc/viscous.md).
-    const SolidScene all = scene_of_all(dem, obstacles);
-    auto bodies = fluid::viscous_bodies(all.placements, all.states, all.obstacles, rigid_rows);
-    for (std::size_t o = 0; o < cfg.obstacle_free_slip.size(); ++o)  // obstacles/<name>/wall
-      bodies[all.placements.size() + o].free_slip = cfg.obstacle_free_slip[o] != 0;
-    // With the pressure predictor the solve takes u + du, du = dt (g - grad p^n / rho), and
-    // the result gives du back (doc/viscous.md, "Pressure predictor"); not with rigid rows, whose
-    // solids would need the same prediction of the rest of their step.
-    const bool predict = cfg.viscous_pressure_predictor && !rigid_rows;
-    grid::FaceField du(f.u), dw(f.w);
-    if (predict) {
-      fluid::viscous_pressure_predictor(du, dw, f.p, f.cells, f.apertures, dt, cfg, surface, L.d,
-                                        L.halo);
-      add_scaled(f.u, du, 1.0), add_scaled(f.w, dw, 1.0);
-    }
-    const auto step = fluid::apply_viscosity_implicit(f.u, f.w, f.cells, dt, cfg, L.d, L.halo,
-                                                      bodies, cfg.viscous_beta);
-    if (predict) add_scaled(f.u, du, -1.0), add_scaled(f.w, dw, -1.0);
-    viscous = fluid::viscous_exchange(all.states, all.obstacles.size(), step.loads,
-                                      owned_solids(dem), L.comm);
-    f.viscous_wall_force = step.loads.wall_force;
-    fluid::apply_gravity(f.u, f.w, f.cells, dt, cfg);  // on owned faces: the halo follows
-    L.halo.forward_all({&f.u, &f.w});
-  } else {
-    fluid::apply_gravity(f.u, f.w, f.cells, dt, cfg);
-    fluid::apply_viscosity(f.u, f.w, f.cells, dt, cfg, L.d, L.halo);
+  if (!cfg.implicit_viscosity) {
+    fluid::add_forces_explicit(cfg, dt, L.d, L.halo, f);
+    return {};
   }
-  fluid::enforce_walls(f.u, f.w, cfg, L.d);
-  return viscous;
+  const SolidScene all = scene_of_all(dem, obstacles);  // every rank solves the whole grid
+  return fluid::add_forces_implicit(
+      cfg, fluid::viscous_bodies(all.placements, all.states, all.obstacles, rigid_rows), all.states,
+      owned_solids(dem), rigid_rows, dt, surface, L.d, L.halo, L.comm, f);
 }
 
 // Collision loads for eq. 6 inside the PPE.
@@ -236,22 +205,6 @@ std::function<void(double&, double&)> push_out_of_solids(const StepSettings& set
   return [&locator, h](double& x, double& z) { push_out(locator, h, x, z); };
 }
 
-// Closed faces (walls, bodies) hold 0 and count as known; the rest is extended.
-void extend_displacement(const Layout& L, const fluid::FluidConfig& unit,
-                         const fluid::FluidState& f, FaceField& dx, FaceField& dz) {
-  grid::GridArray<signed char> du(L.d, Stagger::FaceX, 0), dw(L.d, Stagger::FaceZ, 0);
-  fluid::fluid_faces(f.cells, f.apertures, du, dw);
-  for (auto [valid, E] : {std::pair{&du, &f.apertures.E_x}, std::pair{&dw, &f.apertures.E_z}}) {
-    const auto b = valid->storage();
-    for (int k = b.k0; k < b.k1; ++k)
-      for (int i = b.i0; i < b.i1; ++i)
-        if ((*E)(i, k) <= 0.0) (*valid)(i, k) = 1;
-  }
-  L.halo.forward_all({&dx, &dz});
-  fluid::enforce_walls(dx, dz, unit, L.d);
-  fluid::extend_velocity(dx, dz, du, dw, L.d.halo(), L.halo);
-}
-
 }  // namespace
 
 // Particles crowded above the bulk density (S > 1), or thinned inside the water, are moved
@@ -286,7 +239,7 @@ bool correct_density(const Layout& L, const StepSettings& set, long long step,
     for (int k = b.k0; k < b.k1; ++k)
       for (int i = b.i0; i < b.i1; ++i) (*g)(i, k) = std::clamp((*g)(i, k), -most, most);
   }
-  extend_displacement(L, unit, f, dx, dz);
+  fluid::extend_displacement(f.cells, f.apertures, unit, L.d, L.halo, dx, dz);
   const SolidLocator locator(solids.scene);
   particles::advect(particles, set.particles, dx, dz, set.spec, 1.0,
                     push_out_of_solids(set, locator));
@@ -310,14 +263,7 @@ void advect_particles(const Layout& L, const StepSettings& set, long long step,
   } catch (const core::SolverError& e) {
     failure = e.what();
   }
-  if (L.comm.any(!failure.empty())) {
-    std::string first = failure;
-    for (int r = 0; r < L.comm.size(); ++r) {
-      const std::string theirs = L.comm.broadcast(failure, r);
-      if (first.empty() && !theirs.empty()) first = theirs;
-    }
-    throw core::SolverError(first);
-  }
+  L.comm.throw_if_any(failure);
   if (set.fluid.open.any()) {  // open sides: out through the outflows, in through the inflows
     std::vector<char> keep(particles.size(), 1);
     if (fluid::mark_outflow_particles(particles.x, particles.z, set.fluid.open, set.spec, keep) > 0)

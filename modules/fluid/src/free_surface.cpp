@@ -143,4 +143,21 @@ bool excess_area(const grid::CellField& S, const CellStates& cells, const geomet
   return any;
 }
 
+// Closed faces (walls, bodies) hold 0 and count as known; the rest is extended.
+void extend_displacement(const CellStates& cells, const Apertures& apertures,
+                         const FluidConfig& unit, const grid::Decomposition& d,
+                         const grid::Halo& halo, grid::FaceField& dx, grid::FaceField& dz) {
+  grid::GridArray<signed char> du(d, grid::Stagger::FaceX, 0), dw(d, grid::Stagger::FaceZ, 0);
+  fluid_faces(cells, apertures, du, dw);
+  for (auto [valid, E] : {std::pair{&du, &apertures.E_x}, std::pair{&dw, &apertures.E_z}}) {
+    const auto b = valid->storage();
+    for (int k = b.k0; k < b.k1; ++k)
+      for (int i = b.i0; i < b.i1; ++i)
+        if ((*E)(i, k) <= 0.0) (*valid)(i, k) = 1;
+  }
+  halo.forward_all({&dx, &dz});
+  enforce_walls(dx, dz, unit, d);
+  extend_velocity(dx, dz, du, dw, d.halo(), halo);
+}
+
 }  // namespace picdem::fluid

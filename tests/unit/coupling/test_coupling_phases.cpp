@@ -1,5 +1,6 @@
 // The coupling phases against values worked by hand: the damping of particles in contact gaps
-// (eq. 20) and the solids' snapshot (ordered by id, matched by id across the DEM). The solid
+// (eq. 20) and the solids' snapshot (ordered by id, matched by id across the DEM; every solid of
+// the run on every rank for the implicit viscous solve). The solid
 // couplings of the pressure equation are the fluid's: tests/unit/fluid/test_body_loads.cpp.
 #include <gtest/gtest.h>
 
@@ -128,5 +129,51 @@ TEST(SolidSnapshot, SceneOfTheDemIsOrderedById) {
     EXPECT_EQ(scene.placements[b].pose.x.z, scene.states[b].x.z);
     EXPECT_EQ(scene.index_of(scene.states[b].id), static_cast<int>(b));
     EXPECT_NEAR(scene.placements[b].shape->bounding_radius(), 0.02, 1e-15);
+  }
+}
+
+// scene_of_all (the replicated implicit viscous solve's scene): every solid of the run on every
+// rank, gathered from the owners, ordered by id, each with its own state and placement; the
+// obstacles as given. The solids are those of SceneOfTheDemIsOrderedById, on 1 or 2 ranks.
+TEST(SolidSnapshot, SceneOfAllHoldsEverySolidOnEveryRank) {
+  const core::Comm comm;
+  const double L = 1.0, H = 0.5;
+  dem::DemConfig cfg;
+  cfg.h = 0.01;
+  std::vector<core::Box2> regions;
+  const int n = comm.size();
+  for (int r = 0; r < n; ++r) regions.push_back({{L * r / n, 0.0}, {L * (r + 1) / n, H}});
+  dem::DemSolver dem(comm, cfg, regions, {{0.0, 0.0}, {L, H}}, {});
+  std::vector<dem::SolidSpec> specs;
+  const std::int64_t ids[] = {5, 2, 8, 0, 3};
+  for (int s = 0; s < 5; ++s) {
+    dem::SolidSpec spec;
+    spec.shape = std::make_shared<const geometry::Circle>(0.01 * (s + 1));
+    spec.density = 1000.0;
+    spec.state.id = ids[s];
+    spec.state.x = {0.1 + 0.2 * s, 0.25};  // spread over the strips
+    spec.state.v = {0.1 * s, -0.2 * s};
+    specs.push_back(spec);
+  }
+  dem.add_solids(specs);
+  geometry::Obstacle o;
+  o.name = "step";
+  o.polygons = {{{0.0, 0.0}, {0.1, 0.0}, {0.1, 0.05}, {0.0, 0.05}}};
+  const auto all = coupling::scene_of_all(&dem, {o});
+  ASSERT_EQ(all.states.size(), 5u);
+  ASSERT_EQ(all.placements.size(), 5u);
+  ASSERT_EQ(all.obstacles.size(), 1u);
+  EXPECT_EQ(all.obstacles[0].name, "step");
+  // by id: 0 (s = 3), 2 (s = 1), 3 (s = 4), 5 (s = 0), 8 (s = 2)
+  const int spec_of[] = {3, 1, 4, 0, 2};
+  for (std::size_t b = 0; b < 5; ++b) {
+    const dem::SolidSpec& spec = specs[static_cast<std::size_t>(spec_of[b])];
+    EXPECT_EQ(all.states[b].id, spec.state.id);
+    EXPECT_EQ(all.placements[b].id, spec.state.id);
+    EXPECT_EQ(all.states[b].x.x, spec.state.x.x);
+    EXPECT_EQ(all.states[b].v.x, spec.state.v.x);
+    EXPECT_EQ(all.states[b].v.z, spec.state.v.z);
+    EXPECT_EQ(all.placements[b].pose.x.x, spec.state.x.x);
+    EXPECT_NEAR(all.placements[b].shape->bounding_radius(), 0.01 * (spec_of[b] + 1), 1e-15);
   }
 }

@@ -33,6 +33,10 @@ class Comm {
   void sum_in_place(std::vector<long long>& v) const;
   /// Rank `root`'s string on every rank.
   std::string broadcast(const std::string& s, int root = 0) const;
+  /// A failure found on one rank stops every rank, never just one: when any rank's `failure` is
+  /// not empty, throws core::SolverError on every rank: with its own message, or on a rank
+  /// without one, the lowest failing rank's.
+  void throw_if_any(const std::string& failure) const;
   /// Concatenation of every rank's doubles in rank order, on every rank.
   std::vector<double> all_gather(const std::vector<double>& mine) const;
 

@@ -40,4 +40,11 @@ bool excess_area(const grid::CellField& S, const CellStates& cells, const geomet
                  double relaxation, double cap, const grid::Decomposition& d,
                  grid::CellField& source);
 
+/// The density correction's particle displacement (dx, dz) extended beyond the fluid faces
+/// (fluid_faces): closed faces (walls, bodies: E = 0) hold 0 and count as known; `unit`: the
+/// correction's free-slip configuration, whose walls it enforces. Refreshes the halo.
+void extend_displacement(const CellStates& cells, const Apertures& apertures,
+                         const FluidConfig& unit, const grid::Decomposition& d,
+                         const grid::Halo& halo, grid::FaceField& dx, grid::FaceField& dz);
+
 }  // namespace picdem::fluid

@@ -1,0 +1,78 @@
+// fluid::choose_time_step against values worked by hand: h = 0.01 m, time/cfl 0.5, the largest
+// face speed 2 m/s (w = -2 on every face, u = 1), on 1 or 2 ranks (the speed is every rank's).
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "picdem/core/error.hpp"
+#include "picdem/fluid/time_step.hpp"
+
+using namespace picdem;
+
+namespace {
+
+struct Tank {
+  grid::GridSpec spec;
+  core::Comm comm;
+  grid::Decomposition d;
+  fluid::FluidState f;
+  static grid::GridSpec make_spec() {
+    grid::GridSpec s;
+    s.nx = 8, s.nz = 4, s.h = 0.01;
+    return s;
+  }
+  Tank() : spec(make_spec()), d(spec, comm, 3, 0, 0), f(d) {
+    for (auto [field, value] : {std::pair{&f.u, 1.0}, std::pair{&f.w, -2.0}}) {
+      const auto b = field->storage();
+      for (int k = b.k0; k < b.k1; ++k)
+        for (int i = b.i0; i < b.i1; ++i) (*field)(i, k) = value;
+    }
+  }
+};
+
+}  // namespace
+
+// dt = min(dt_max, cfl h / max|u|, cfl h / speed, h^2 / (4 nu) with explicit viscosity).
+TEST(TimeStep, SmallestOfTheBounds) {
+  Tank t;
+  const fluid::TimeStepLimits limits{0.01, 0.5, 0.01, 1e-6, 1.0};
+  fluid::FluidConfig cfg;
+  cfg.h = 0.01, cfg.nu = 1e-6;  // h^2 / (4 nu) = 25 s: not the bound
+  const double tol = 1e-18;
+  // without water: dt_max, whatever the speed
+  EXPECT_EQ(fluid::choose_time_step(limits, cfg, 0.0, 0, nullptr, 7.0, t.comm), 0.01);
+  // the grid: 0.5 0.01 / 2 = 2.5e-3
+  EXPECT_NEAR(fluid::choose_time_step(limits, cfg, 0.0, 0, &t.f, 0.0, t.comm), 2.5e-3, tol);
+  // a particle or solid surface at 5 m/s: 0.5 0.01 / 5 = 1e-3
+  EXPECT_NEAR(fluid::choose_time_step(limits, cfg, 0.0, 0, &t.f, 5.0, t.comm), 1e-3, tol);
+  // one slower than the grid changes nothing
+  EXPECT_NEAR(fluid::choose_time_step(limits, cfg, 0.0, 0, &t.f, 1.0, t.comm), 2.5e-3, tol);
+  // dt_max below them all
+  fluid::TimeStepLimits capped = limits;
+  capped.dt_max = 4e-4;
+  EXPECT_EQ(fluid::choose_time_step(capped, cfg, 0.0, 0, &t.f, 5.0, t.comm), 4e-4);
+  // explicit viscosity nu = 0.5: h^2 / (4 nu) = 5e-5; none with the implicit scheme
+  cfg.nu = 0.5;
+  EXPECT_NEAR(fluid::choose_time_step(limits, cfg, 0.0, 0, &t.f, 0.0, t.comm), 5e-5, tol);
+  cfg.implicit_viscosity = true;
+  EXPECT_NEAR(fluid::choose_time_step(limits, cfg, 0.0, 0, &t.f, 0.0, t.comm), 2.5e-3, tol);
+}
+
+// Below time/dt_min the run has blown up, unless the end is nearer than dt_min.
+TEST(TimeStep, CollapseBelowDtMinStopsTheRun) {
+  Tank t;
+  const fluid::TimeStepLimits limits{0.01, 0.5, 0.01, 1e-3, 1.0};
+  fluid::FluidConfig cfg;
+  cfg.h = 0.01;
+  // a speed of 50 m/s: 1e-4 < dt_min
+  try {
+    fluid::choose_time_step(limits, cfg, 0.25, 7, &t.f, 50.0, t.comm);
+    ADD_FAILURE() << "no SolverError";
+  } catch (const core::SolverError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("step 7 at t = 0.25 s"), std::string::npos) << what;
+    EXPECT_NE(what.find("below time/dt_min"), std::string::npos) << what;
+  }
+  // 5e-4 before the end (less than dt_min): the short step is taken
+  EXPECT_NEAR(fluid::choose_time_step(limits, cfg, 0.9995, 7, &t.f, 50.0, t.comm), 1e-4, 1e-18);
+}
