@@ -22,6 +22,34 @@ core::SolidState state(std::int64_t id, Vec2 x, Vec2 v = {}, double omega = 0.0)
   return st;
 }
 
+// A DEM over a 1 m x 0.5 m tank cut into one strip per rank, holding disks of density 1000 with
+// the ids `ids`; solid s has radius radius(s), centre at(s) and velocity v(s).
+template <class Radius, class At, class Velocity>
+std::unique_ptr<dem::DemSolver> strip_dem(const core::Comm& comm,
+                                          const std::vector<std::int64_t>& ids, Radius radius,
+                                          At at, Velocity v) {
+  const double L = 1.0, H = 0.5;
+  dem::DemConfig cfg;
+  cfg.h = 0.01;
+  std::vector<core::Box2> regions;
+  const int n = comm.size();
+  for (int r = 0; r < n; ++r) regions.push_back({{L * r / n, 0.0}, {L * (r + 1) / n, H}});
+  auto dem = std::make_unique<dem::DemSolver>(comm, cfg, regions, core::Box2{{0.0, 0.0}, {L, H}},
+                                              std::vector<std::vector<Vec2>>{});
+  std::vector<dem::SolidSpec> specs;
+  for (int s = 0; s < static_cast<int>(ids.size()); ++s) {
+    dem::SolidSpec spec;
+    spec.shape = std::make_shared<const geometry::Circle>(radius(s));
+    spec.density = 1000.0;
+    spec.state.id = ids[static_cast<std::size_t>(s)];
+    spec.state.x = at(s);
+    spec.state.v = v(s);
+    specs.push_back(spec);
+  }
+  dem->add_solids(specs);
+  return dem;
+}
+
 }  // namespace
 
 // Eq. 20 with h = 0.01, beta = 0.2: the band of a contact is 0.04 long (along the tangent) and
@@ -91,28 +119,20 @@ TEST(SolidSnapshot, MotionsMatchedById) {
 // within contact reach of the strips' borders when there are several ranks.
 TEST(SolidSnapshot, SceneOfTheDemIsOrderedById) {
   const core::Comm comm;
-  const double L = 1.0, H = 0.5;
-  dem::DemConfig cfg;
-  cfg.h = 0.01;
-  std::vector<core::Box2> regions;
+  const double L = 1.0;
   const int n = comm.size();
-  for (int r = 0; r < n; ++r) regions.push_back({{L * r / n, 0.0}, {L * (r + 1) / n, H}});
-  dem::DemSolver dem(comm, cfg, regions, {{0.0, 0.0}, {L, H}}, {});
-  std::vector<dem::SolidSpec> specs;
-  const std::int64_t ids[] = {5, 2, 8, 0, 3};
-  for (int s = 0; s < 5; ++s) {
-    dem::SolidSpec spec;
-    spec.shape = std::make_shared<const geometry::Circle>(0.02);
-    spec.density = 1000.0;
-    spec.state.id = ids[s];
-    // near every strip border: x = k/n +- 0.03
-    const int strip = s % n;
-    spec.state.x = {L * (strip + 0.5) / n + (s % 2 ? -1.0 : 1.0) * (0.5 * L / n - 0.03),
+  const auto dem_ptr = strip_dem(
+      comm, {5, 2, 8, 0, 3}, [](int) { return 0.02; },
+      [&](int s) {
+        // near every strip border: x = k/n +- 0.03
+        const int strip = s % n;
+        return Vec2{L * (strip + 0.5) / n + (s % 2 ? -1.0 : 1.0) * (0.5 * L / n - 0.03),
                     0.1 + 0.06 * s};
-    spec.state.v = {0.1 * s, 0.0};
-    specs.push_back(spec);
-  }
-  dem.add_solids(specs);
+      },
+      [](int s) {
+        return Vec2{0.1 * s, 0.0};
+      });
+  const dem::DemSolver& dem = *dem_ptr;
   const auto scene = coupling::scene_of(&dem, {});
   const std::size_t seen = dem.owned().size() + dem.ghosts().size();
   ASSERT_EQ(scene.states.size(), seen);
@@ -137,29 +157,15 @@ TEST(SolidSnapshot, SceneOfTheDemIsOrderedById) {
 // obstacles as given. The solids are those of SceneOfTheDemIsOrderedById, on 1 or 2 ranks.
 TEST(SolidSnapshot, SceneOfAllHoldsEverySolidOnEveryRank) {
   const core::Comm comm;
-  const double L = 1.0, H = 0.5;
-  dem::DemConfig cfg;
-  cfg.h = 0.01;
-  std::vector<core::Box2> regions;
-  const int n = comm.size();
-  for (int r = 0; r < n; ++r) regions.push_back({{L * r / n, 0.0}, {L * (r + 1) / n, H}});
-  dem::DemSolver dem(comm, cfg, regions, {{0.0, 0.0}, {L, H}}, {});
-  std::vector<dem::SolidSpec> specs;
-  const std::int64_t ids[] = {5, 2, 8, 0, 3};
-  for (int s = 0; s < 5; ++s) {
-    dem::SolidSpec spec;
-    spec.shape = std::make_shared<const geometry::Circle>(0.01 * (s + 1));
-    spec.density = 1000.0;
-    spec.state.id = ids[s];
-    spec.state.x = {0.1 + 0.2 * s, 0.25};  // spread over the strips
-    spec.state.v = {0.1 * s, -0.2 * s};
-    specs.push_back(spec);
-  }
-  dem.add_solids(specs);
+  const std::vector<std::int64_t> ids = {5, 2, 8, 0, 3};
+  const auto radius = [](int s) { return 0.01 * (s + 1); };
+  const auto at = [](int s) { return Vec2{0.1 + 0.2 * s, 0.25}; };  // spread over the strips
+  const auto v = [](int s) { return Vec2{0.1 * s, -0.2 * s}; };
+  const auto dem = strip_dem(comm, ids, radius, at, v);
   geometry::Obstacle o;
   o.name = "step";
   o.polygons = {{{0.0, 0.0}, {0.1, 0.0}, {0.1, 0.05}, {0.0, 0.05}}};
-  const auto all = coupling::scene_of_all(&dem, {o});
+  const auto all = coupling::scene_of_all(dem.get(), {o});
   ASSERT_EQ(all.states.size(), 5u);
   ASSERT_EQ(all.placements.size(), 5u);
   ASSERT_EQ(all.obstacles.size(), 1u);
@@ -167,13 +173,13 @@ TEST(SolidSnapshot, SceneOfAllHoldsEverySolidOnEveryRank) {
   // by id: 0 (s = 3), 2 (s = 1), 3 (s = 4), 5 (s = 0), 8 (s = 2)
   const int spec_of[] = {3, 1, 4, 0, 2};
   for (std::size_t b = 0; b < 5; ++b) {
-    const dem::SolidSpec& spec = specs[static_cast<std::size_t>(spec_of[b])];
-    EXPECT_EQ(all.states[b].id, spec.state.id);
-    EXPECT_EQ(all.placements[b].id, spec.state.id);
-    EXPECT_EQ(all.states[b].x.x, spec.state.x.x);
-    EXPECT_EQ(all.states[b].v.x, spec.state.v.x);
-    EXPECT_EQ(all.states[b].v.z, spec.state.v.z);
-    EXPECT_EQ(all.placements[b].pose.x.x, spec.state.x.x);
-    EXPECT_NEAR(all.placements[b].shape->bounding_radius(), 0.01 * (spec_of[b] + 1), 1e-15);
+    const int s = spec_of[b];
+    EXPECT_EQ(all.states[b].id, ids[static_cast<std::size_t>(s)]);
+    EXPECT_EQ(all.placements[b].id, ids[static_cast<std::size_t>(s)]);
+    EXPECT_EQ(all.states[b].x.x, at(s).x);
+    EXPECT_EQ(all.states[b].v.x, v(s).x);
+    EXPECT_EQ(all.states[b].v.z, v(s).z);
+    EXPECT_EQ(all.placements[b].pose.x.x, at(s).x);
+    EXPECT_NEAR(all.placements[b].shape->bounding_radius(), radius(s), 1e-15);
   }
 }
