@@ -125,14 +125,22 @@ fluid::ViscousExchange add_forces(const Layout& L, const fluid::FluidConfig& cfg
                                   const std::vector<geometry::Obstacle>& obstacles, double dt,
                                   const fluid::SurfaceFractions* surface, fluid::FluidState& f) {
   core::ScopedTimer timer("forces");
+  fluid::ViscousExchange viscous;
   if (!cfg.implicit_viscosity) {
     fluid::add_forces_explicit(cfg, dt, L.d, L.halo, f);
-    return {};
+  } else {
+    const SolidScene all = scene_of_all(dem, obstacles);  // every rank solves the whole grid
+    viscous = fluid::add_forces_implicit(
+        cfg, fluid::viscous_bodies(all.placements, all.states, all.obstacles, rigid_rows),
+        all.states, owned_solids(dem), rigid_rows, dt, surface, L.d, L.halo, L.comm, f);
   }
-  const SolidScene all = scene_of_all(dem, obstacles);  // every rank solves the whole grid
-  return fluid::add_forces_implicit(
-      cfg, fluid::viscous_bodies(all.placements, all.states, all.obstacles, rigid_rows), all.states,
-      owned_solids(dem), rigid_rows, dt, surface, L.d, L.halo, L.comm, f);
+  // outflow faces with du_n / dn = 0 before the projection (doc/open_boundaries.md)
+  if (std::any_of(cfg.open.side.begin(), cfg.open.side.end(),
+                  [](const fluid::OpenSide& s) { return s.zero_gradient; })) {
+    fluid::zero_gradient_outflow(f.u, f.w, cfg.open, L.d);
+    fluid::enforce_walls(f.u, f.w, cfg, L.d);
+  }
+  return viscous;
 }
 
 // Collision loads for eq. 6 inside the PPE.

@@ -159,6 +159,10 @@ void declare_open_parameters(core::ParamSchema& schema) {
               "inflow: the inward speed (uniform) or its peak at the range's middle (parabolic) "
               "[m/s]")
         .non_negative();
+    schema.string(p + "outflow_velocity", "projected", {"projected", "zero_gradient"},
+                  "outflow: the outflow faces' velocity before the projection: their own "
+                  "(projected) or that of the interior faces next to them (zero_gradient, "
+                  "du_n / dn = 0); p = 0 on the faces either way");
     schema.reals(p + "heights", {}, "table: positions along the side, increasing [m]");
     schema.reals(p + "times", {}, "table: times, increasing, >= 0 [s]").non_negative();
     schema
@@ -187,6 +191,9 @@ void declare_open_parameters(core::ParamSchema& schema) {
       if (type != "inflow" && (v > 0.0 || !table.empty() || profile != "uniform"))
         e << "keys '" << p << "velocity', 'profile' and 'table' belong to an inflow, but '" << p
           << "type' is " << type;
+      if (type != "outflow" && params.string(p + "outflow_velocity") != "projected")
+        e << "key '" << p << "outflow_velocity' belongs to an outflow, but '" << p << "type' is "
+          << type;
       if (type == "inflow" && profile != "table" && !(v > 0.0))
         e << "key '" << p << "velocity' = " << v << ": an inflow with the " << profile
           << " profile needs a speed > 0";
@@ -221,6 +228,7 @@ OpenBoundaries open_boundaries_from(const core::Params& params, const grid::Grid
     s.heights = params.reals(p + "heights");
     s.times = params.reals(p + "times");
     s.table = params.reals(p + "table");
+    s.zero_gradient = params.string(p + "outflow_velocity") == "zero_gradient";
   }
   return o;
 }

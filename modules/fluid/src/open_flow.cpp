@@ -112,6 +112,23 @@ void enforce_open_sides(FaceField& u, FaceField& w, const OpenBoundaries& o,
   }
 }
 
+void zero_gradient_outflow(FaceField& u, FaceField& w, const OpenBoundaries& o,
+                           const grid::Decomposition& d) {
+  const grid::GridSpec& g = d.spec();
+  for (std::size_t side = 0; side < 4; ++side) {
+    const OpenSide& s = o.side[side];
+    if (s.kind != OpenKind::Outflow || !s.zero_gradient) continue;
+    const bool x_side = side < 2;
+    FaceField& normal = x_side ? u : w;
+    const int in = side == 0 || side == 2 ? 1 : -1;  // the step inwards
+    for_open_faces(normal, s, side, g, [&](int i, int k, int) {
+      const int ni = x_side ? i + in : i, nk = x_side ? k : k + in;
+      // du_n / dn = 0: u_face = u_inside
+      if (normal.in_storage(ni, nk)) normal(i, k) = normal(ni, nk);
+    });
+  }
+}
+
 void open_surface_fractions(SurfaceFractions& sf, const OpenBoundaries& o,
                             const grid::Decomposition& d) {
   const grid::GridSpec& g = d.spec();

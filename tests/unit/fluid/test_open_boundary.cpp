@@ -90,6 +90,11 @@ TEST(OpenBoundary, KeyChecksNameKeyValueAndReason) {
                 .find("len(heights) x len(times) speeds (got 2, 1, 1)"),
             std::string::npos);
   EXPECT_NE(error_of({"open/bottom/type=sink"}).find("open/bottom/type"), std::string::npos);
+  EXPECT_NE(error_of({"open/left/type=inflow", "open/left/velocity=0.2",
+                      "open/left/outflow_velocity=zero_gradient"})
+                .find("'open/left/outflow_velocity' belongs to an outflow, but 'open/left/type' "
+                      "is inflow"),
+            std::string::npos);
   EXPECT_EQ(error_of({"open/left/type=inflow", "open/left/velocity=0.2", "open/right/type=outflow",
                       "open/right/range=[0.05, 0.15]"}),
             "");
@@ -140,6 +145,37 @@ TEST(OpenBoundary, WallVelocitiesAndGhostsOfOpenSides) {
   const auto q = fluid::open_fluxes(u, w, cfg.open, d, self);
   EXPECT_NEAR(q.inflow, 2 * 0.05 * 0.2, 1e-15);
   EXPECT_NEAR(q.outflow, 0.05 * (0.31 + 3 * 0.7), 1e-15);
+}
+
+// open/right/outflow_velocity: zero_gradient over z in [0.05, 0.15] (faces k = 1, 2 of h = 0.05):
+// those outflow faces take the interior faces' velocity (du_n / dn = 0), and enforce_walls then
+// keeps it and copies it into the ghosts; the right side's other faces and a projected outflow on
+// the top keep their own values.
+TEST(OpenBoundary, ZeroGradientOutflowTakesTheInteriorFace) {
+  core::Comm self(MPI_COMM_SELF);
+  const auto params = fluid_test::tank_params(
+      0.4, 0.2, 0.05,
+      {"open/right/type=outflow", "open/right/range=[0.05, 0.15]",
+       "open/right/outflow_velocity=zero_gradient", "open/top/type=outflow"});
+  const auto cfg = fluid::config_from(params);
+  EXPECT_TRUE(cfg.open.side[1].zero_gradient);
+  EXPECT_FALSE(cfg.open.side[3].zero_gradient);
+  GridSpec s = spec_from(params);
+  Decomposition d(s, self, 2);
+  FaceField u(d, Stagger::FaceX, 0.0), w(d, Stagger::FaceZ, 0.0);
+  for (int k = -2; k < 6; ++k)
+    for (int i = -2; i < 11; ++i) u(i, k) = 0.01 * i + 0.1 * k;
+  for (int k = -2; k < 7; ++k)
+    for (int i = -2; i < 10; ++i) w(i, k) = 0.02 * i + 0.3 * k;
+  fluid::zero_gradient_outflow(u, w, cfg.open, d);
+  fluid::enforce_walls(u, w, cfg, d);
+  for (int k : {1, 2}) {
+    EXPECT_DOUBLE_EQ(u(8, k), 0.07 + 0.1 * k);  // u(7, k)
+    EXPECT_DOUBLE_EQ(u(9, k), 0.07 + 0.1 * k);  // the ghost beyond
+  }
+  EXPECT_EQ(u(8, 0), 0.0);  // the wall below the range
+  EXPECT_EQ(u(8, 3), 0.0);  // and above it
+  for (int i = 0; i < 8; ++i) EXPECT_DOUBLE_EQ(w(i, 4), 0.02 * i + 1.2);  // projected: kept
 }
 
 // 4 x 4 fluid cells, h = 0.1, rho = 1000, dt = 0.01 (dt/(rho h) E = 1e-5): an inflow on the left

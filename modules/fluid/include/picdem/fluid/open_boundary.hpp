@@ -27,6 +27,10 @@ struct OpenSide {
   /// Table: heights s_m (along the side), times t_l, speeds table[l * heights.size() + m],
   /// bilinear, held constant beyond the first and last entries.
   std::vector<double> heights, times, table;
+  /// Outflow: open/<side>/outflow_velocity is zero_gradient: before the projection the outflow
+  /// faces take the velocity of the interior faces next to them (du_n / dn = 0), instead of their
+  /// own P2G value (projected). p = 0 on the faces either way.
+  bool zero_gradient = false;
 
   /// Whether the face centred at `s` along the side is open.
   bool open_at(double s) const { return kind != OpenKind::Wall && s >= from && s <= to; }

@@ -26,6 +26,13 @@ OutflowFaces keep_outflow_faces(const grid::FaceField& u, const grid::FaceField&
 void enforce_open_sides(grid::FaceField& u, grid::FaceField& w, const OpenBoundaries& o,
                         const grid::Decomposition& d, const OutflowFaces& kept);
 
+/// Outflow sides with zero_gradient (open/<side>/outflow_velocity): each open face takes the
+/// velocity of the interior face next to it (du_n / dn = 0), on the storage faces whose neighbour
+/// is stored. Called before the projection (the step's forces phase); enforce_walls then keeps
+/// it and the projection with p = 0 on the face corrects it.
+void zero_gradient_outflow(grid::FaceField& u, grid::FaceField& w, const OpenBoundaries& o,
+                           const grid::Decomposition& d);
+
 /// theta = 1/2 on the outflow faces: p = 0 on the boundary face itself (ghost fluid).
 void open_surface_fractions(SurfaceFractions& s, const OpenBoundaries& o,
                             const grid::Decomposition& d);
