@@ -267,6 +267,11 @@ Simulation::Modules Simulation::modules() {
           s.dem.get()};
 }
 
+void Simulation::choose_pressure_rows_again() {
+  if (m_->pressure) m_->pressure->choose_rows_again();
+  if (m_->density_solver) m_->density_solver->choose_rows_again();
+}
+
 void Simulation::resume(double t, long long step, const Diagnostics& diag) {
   m_->t = t, m_->step = step, m_->diag = diag;
 }

@@ -112,6 +112,19 @@ void declare_parameters(core::ParamSchema& schema) {
                 "(solver/MueLu_solids applies); low_rank: kept beside it and applied as a low-rank "
                 "term in CG, MueLu built on the fluid rows plus the blocks' diagonal "
                 "(doc/performance.md)");
+  schema.string("solver/pressure_structure", "active", {"active", "fixed"},
+                "active: the pressure rows are the owned fluid cells, and the Tpetra structure "
+                "(maps, graph, Exports) is rebuilt whenever they change; fixed: the rows are a "
+                "kept band of cells (the fluid and every cell within solver/structure_margin of "
+                "it, chosen again when a fluid cell leaves it or a checkpoint is written), air "
+                "and solid cells identity rows (p = 0), so the structure is rebuilt only then and "
+                "otherwise values are refilled; solver/rebalance does not apply "
+                "(doc/performance.md)");
+  schema
+      .integer("solver/structure_margin", 4,
+               "solver/pressure_structure fixed: cells (along x and z) around the fluid that "
+               "are rows too; a margin as large as the grid makes every cell a row")
+      .at_least(0);
   schema.passthrough("solver/Belos",
                      "\"Implicit Residual Scaling\": \"Norm of RHS\"\n"
                      "Verbosity: 0\n",

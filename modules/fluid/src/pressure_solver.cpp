@@ -47,6 +47,8 @@ struct SolverSettings {
   int max_iterations = 500;
   bool rebalance = true;
   bool low_rank = false;  // solver/coupling_operator: low_rank
+  bool fixed = false;     // solver/pressure_structure: fixed
+  int margin = 0;         // solver/structure_margin
   bool density = false;   // the density correction's solve (its own timers)
   Teuchos::ParameterList belos, muelu, muelu_solids, muelu_one_level;
 };
@@ -129,6 +131,8 @@ SolverSettings settings_from(const core::Params& params,
   s.rebalance = params.boolean("solver/rebalance");
   s.density = density;
   s.low_rank = params.string("solver/coupling_operator") == "low_rank";
+  s.fixed = params.string("solver/pressure_structure") == "fixed";
+  s.margin = static_cast<int>(params.integer("solver/structure_margin"));
   s.belos = params.teuchos("solver/Belos");
   s.muelu = params.teuchos("solver/MueLu");
   s.muelu_solids = params.teuchos("solver/MueLu_solids");
@@ -230,7 +234,8 @@ SolveStats solve_rows(detail::TpetraSystem& ts, const grid::Decomposition& d,
         "the pressure solver needs Tpetra initialised: create a fluid::LinearAlgebraScope in "
         "main()");
   const core::Comm& comm = d.comm();
-  stats.unknowns = comm.sum(static_cast<long long>(rows.cells.size()));
+  stats.unknowns =
+      comm.sum(static_cast<long long>(rows.fixed ? rows.active.size() : rows.cells.size()));
   x.resize(rows.cells.size(), 0.0);
   double b2 = 0.0;
   for (double v : rows.rhs) b2 += v * v;
@@ -239,10 +244,11 @@ SolveStats solve_rows(detail::TpetraSystem& ts, const grid::Decomposition& d,
     std::fill(x.begin(), x.end(), 0.0);
     return stats;
   }
-  stats.reused_structure = ts.load(rows, x, d, settings.rebalance);
+  // Fixed rows are solved where they are assembled: they move with the decomposition only.
+  stats.reused_structure = ts.load(rows, x, d, settings.rebalance && !rows.fixed);
   const bool blocks = rows.with_solids && !rows.low_rank;  // dense blocks in the matrix
-  const RCP<OP> prec =
-      preconditioner(ts, settings, blocks, stats.unknowns, comm.size(), interpreters);
+  const auto matrix_rows = static_cast<long long>(ts.matrix()->getGlobalNumRows());
+  const RCP<OP> prec = preconditioner(ts, settings, blocks, matrix_rows, comm.size(), interpreters);
   stats.matrix_entries = ts.matrix_entries();
   stats.low_rank_entries = ts.low_rank_entries();
   stats.setup_seconds = seconds_since(t0);
@@ -276,20 +282,45 @@ struct PressureSolver::Impl {
   grid::GridArray<int> row_of;
   detail::TpetraSystem system;
   Interpreters interpreters;
+  // The rows of the last solve() with fixed rows (apply() takes and gives the fluid rows only).
+  bool solved_fixed = false;
+  std::size_t solved_rows = 0;
+  std::vector<int> solved_active;
+  // Fixed rows: the band of cells that are rows, chosen again when a fluid cell leaves it.
+  grid::GridArray<signed char> band;
+  bool band_chosen = false;
   Impl(const grid::Decomposition& dec, const core::Params& params, Equation eq)
       : d(dec),
         halo(dec),
         settings(settings_from(params, eq)),
-        row_of(dec, grid::Stagger::Cell, -1) {}
+        row_of(dec, grid::Stagger::Cell, -1),
+        band(dec, grid::Stagger::Cell, 0) {}
+
+  /// The band chosen again (every fluid cell and the cells within solver/structure_margin of
+  /// one) when it is not chosen yet or a fluid cell has left it on any rank. Collective.
+  void keep_band(const CellStates& cells) {
+    bool out = !band_chosen;
+    const core::IndexBox own = d.owned_cells();
+    constexpr auto kFluid = static_cast<signed char>(grid::CellState::Fluid);
+    for (int k = own.k0; k < own.k1 && !out; ++k)
+      for (int i = own.i0; i < own.i1 && !out; ++i) out = cells(i, k) == kFluid && band(i, k) == 0;
+    if (!d.comm().any(out)) return;
+    core::ScopedTimer timer("fluid: pressure band");
+    detail::choose_band(cells, settings.margin, band);
+    halo.forward(band);
+    band_chosen = true;
+  }
 
   /// The fluid rows (-L_E, -D + source), then the coupling term's part, in the matrix or
   /// (low_rank) beside it.
   void assemble(const CellStates& cells, const Apertures& E, const grid::FaceField& u,
                 const grid::FaceField& w, const std::vector<SolidCoupling>& couplings, double dt,
                 const FluidConfig& cfg, const SurfaceFractions* surface,
-                const grid::CellField* source, bool low_rank) {
+                const grid::CellField* source, bool low_rank, bool fixed) {
     core::ScopedTimer timer("fluid: pressure assembly");
-    detail::fluid_rows(cells, E, u, w, dt, cfg, surface, source, d, rows, row_of);
+    if (fixed) keep_band(cells);
+    detail::fluid_rows(cells, E, u, w, dt, cfg, surface, source, d, rows, row_of,
+                       fixed ? &band : nullptr);
     rows.low_rank = low_rank;
     term->add(couplings, dt, cells, row_of, d, rows);
   }
@@ -305,7 +336,7 @@ AssembledSystem PressureSolver::assemble(const CellStates& cells, const Aperture
                                          const std::vector<SolidCoupling>& couplings, double dt,
                                          const FluidConfig& cfg, const SurfaceFractions* surface,
                                          const grid::CellField* source) const {
-  impl_->assemble(cells, E, u, w, couplings, dt, cfg, surface, source, false);
+  impl_->assemble(cells, E, u, w, couplings, dt, cfg, surface, source, false, false);
   return detail::assembled(impl_->rows);
 }
 
@@ -315,29 +346,52 @@ SolveStats PressureSolver::solve(const CellStates& cells, const Apertures& E,
                                  const FluidConfig& cfg, grid::CellField& p,
                                  const SurfaceFractions* surface, const grid::CellField* source) {
   const auto t0 = std::chrono::steady_clock::now();
-  impl_->assemble(cells, E, u, w, couplings, dt, cfg, surface, source, impl_->settings.low_rank);
+  impl_->assemble(cells, E, u, w, couplings, dt, cfg, surface, source, impl_->settings.low_rank,
+                  impl_->settings.fixed);
   const double assembly = seconds_since(t0);
   const auto& rows = impl_->rows;
   const grid::GridSpec& g = impl_->d.spec();
-  std::vector<double> x(rows.cells.size());
-  for (std::size_t r = 0; r < rows.cells.size(); ++r)
-    x[r] = p(static_cast<int>(rows.cells[r] % g.nx), static_cast<int>(rows.cells[r] / g.nx));
+  auto cell_of = [&](std::size_t r) -> double& {
+    return p(static_cast<int>(rows.cells[r] % g.nx), static_cast<int>(rows.cells[r] / g.nx));
+  };
+  // The initial guess: the previous pressure on the fluid rows, 0 on the identity rows (fixed).
+  std::vector<double> x(rows.cells.size(), 0.0);
+  if (rows.fixed)
+    for (int r : rows.active) x[static_cast<std::size_t>(r)] = cell_of(static_cast<std::size_t>(r));
+  else
+    for (std::size_t r = 0; r < rows.cells.size(); ++r) x[r] = cell_of(r);
   SolveStats stats =
       solve_rows(impl_->system, impl_->d, impl_->settings, rows, x, impl_->interpreters);
   stats.setup_seconds += assembly;
   const core::IndexBox own = impl_->d.owned_cells();
   for (int k = own.k0; k < own.k1; ++k)
     for (int i = own.i0; i < own.i1; ++i) p(i, k) = 0.0;
-  for (std::size_t r = 0; r < rows.cells.size(); ++r)
-    p(static_cast<int>(rows.cells[r] % g.nx), static_cast<int>(rows.cells[r] / g.nx)) = x[r];
+  impl_->solved_fixed = rows.fixed, impl_->solved_rows = rows.cells.size();
+  if (rows.fixed) impl_->solved_active = rows.active;
+  if (rows.fixed)
+    for (int r : rows.active) cell_of(static_cast<std::size_t>(r)) = x[static_cast<std::size_t>(r)];
+  else
+    for (std::size_t r = 0; r < rows.cells.size(); ++r) cell_of(r) = x[r];
   impl_->halo.forward(p);
   return stats;
+}
+
+void PressureSolver::choose_rows_again() {
+  impl_->band_chosen = false;
 }
 
 std::vector<double> PressureSolver::apply(const std::vector<double>& x) const {
   if (impl_->system.op().is_null())
     throw core::SolverError("PressureSolver::apply needs a solve() first");
-  return impl_->system.apply(x);
+  if (!impl_->solved_fixed) return impl_->system.apply(x);
+  // Fixed rows: x and the result on the fluid rows only (the identity rows hold 0).
+  const std::vector<int>& active = impl_->solved_active;
+  std::vector<double> all(impl_->solved_rows, 0.0), y(active.size());
+  for (std::size_t n = 0; n < active.size(); ++n)
+    all[static_cast<std::size_t>(active[n])] = x.at(n);
+  const std::vector<double> y_all = impl_->system.apply(all);
+  for (std::size_t n = 0; n < active.size(); ++n) y[n] = y_all[static_cast<std::size_t>(active[n])];
+  return y;
 }
 
 std::vector<core::SolidLoads> PressureSolver::solid_loads(const grid::CellField& p) const {

@@ -58,7 +58,8 @@ class LowRankOperator final : public Tpetra::Operator<> {
 
 bool TpetraSystem::load(const RowContributions& rows, const std::vector<double>& x0,
                         const grid::Decomposition& d, bool rebalance) {
-  const bool reuse = same_structure(rows, d.comm(), rebalance);
+  const bool reuse = rows.fixed ? fixed_slots(rows, d.comm(), rebalance)
+                                : same_structure(rows, d.comm(), rebalance);
   if (!reuse) rebuild(rows, d, rebalance);
   {
     core::ScopedTimer timer("fluid: pressure values");
@@ -140,9 +141,31 @@ long long TpetraSystem::low_rank_entries() const {
 
 bool TpetraSystem::same_structure(const RowContributions& rows, const core::Comm& comm,
                                   bool rebalance) const {
-  const bool same = built_ && rebalance == rebalance_ && rows.cells == key_cells_ &&
+  const bool same = built_ && !fixed_ && rebalance == rebalance_ && rows.cells == key_cells_ &&
                     rows.row == key_row_ && rows.col == key_col_;
   return !comm.any(!same);
+}
+
+/// Fixed rows: the kept structure serves when the rows are the same cells and every
+/// contribution's column is in its row; pos_ then holds the slots (found in the row's columns,
+/// sorted, so a rebuild would give the same slots and the same sums).
+bool TpetraSystem::fixed_slots(const RowContributions& rows, const core::Comm& comm,
+                               bool rebalance) {
+  bool ok = built_ && fixed_ && rebalance == rebalance_ && rows.cells == key_cells_;
+  if (ok) {
+    pos_.resize(rows.col.size());
+    for (std::size_t c = 0; c < rows.col.size() && ok; ++c) {
+      const int i = static_cast<int>(rows.col[c] % nx_), k = static_cast<int>(rows.col[c] / nx_);
+      const int lid = col_of_.in_storage(i, k) ? col_of_(i, k) : -1;
+      const auto r = static_cast<std::size_t>(rows.row[c]);
+      const LO* b = col_idx_.getRawPtr() + row_ptr_[r];
+      const LO* e = col_idx_.getRawPtr() + row_ptr_[r + 1];
+      const LO* at = std::lower_bound(b, e, static_cast<LO>(lid));
+      ok = lid >= 0 && at != e && *at == lid;
+      if (ok) pos_[c] = static_cast<std::size_t>(at - col_idx_.getRawPtr());
+    }
+  }
+  return !comm.any(!ok);
 }
 
 void TpetraSystem::rebuild(const RowContributions& rows, const grid::Decomposition& d,
@@ -171,7 +194,15 @@ void TpetraSystem::rebuild(const RowContributions& rows, const grid::Decompositi
     build_solve_side(rows, d, rebalance);
   }
   key_cells_ = rows.cells, key_row_ = rows.row, key_col_ = rows.col;
-  rebalance_ = rebalance;
+  rebalance_ = rebalance, fixed_ = rows.fixed;
+  nx_ = d.spec().nx;
+  if (rows.fixed) {
+    col_of_ = grid::GridArray<int>(d, grid::Stagger::Cell, -1);
+    for (std::size_t c = 0; c < rows.col.size(); ++c) {
+      const int i = static_cast<int>(rows.col[c] % nx_), k = static_cast<int>(rows.col[c] / nx_);
+      if (col_of_.in_storage(i, k)) col_of_(i, k) = static_cast<int>(col_idx_[pos_[c]]);
+    }
+  }
   built_ = true;
 }
 

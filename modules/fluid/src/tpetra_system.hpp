@@ -17,6 +17,10 @@
 // rows plus the diagonal of the solids' blocks, and op() is A + U W U^T - diag(U W U^T): U (rows
 // x 3 per solid, the rows a_{s,c}) is built at every load on the assembly rows and exported to
 // the solve rows; the 3 per solid unknowns of U^T x are split evenly over the ranks.
+//
+// With fixed rows (RowContributions::fixed: every owned cell a row, the same columns at every
+// solve), a load whose contributions all fall on the slots of the kept rows refills values only,
+// whatever the fluid mask: the slots are looked up per contribution instead of compared.
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Export.hpp>
@@ -65,6 +69,7 @@ class TpetraSystem {
 
  private:
   bool same_structure(const RowContributions& rows, const core::Comm& comm, bool rebalance) const;
+  bool fixed_slots(const RowContributions& rows, const core::Comm& comm, bool rebalance);
   void rebuild(const RowContributions& rows, const grid::Decomposition& d, bool rebalance);
   std::vector<GO> column_gids(const RowContributions& rows, const grid::Decomposition& d) const;
   void build_source(const RowContributions& rows, const std::vector<GO>& col_gid, bool make_matrix);
@@ -75,7 +80,9 @@ class TpetraSystem {
   void fill_vectors(const RowContributions& rows, const std::vector<double>& x0);
   void build_low_rank(const RowContributions& rows);
 
-  bool built_ = false, rebalance_ = false;
+  bool built_ = false, rebalance_ = false, fixed_ = false;
+  long long nx_ = 0;
+  grid::GridArray<int> col_of_;  // fixed: the CSR column of every stored cell, -1 if none
   std::vector<long long> key_cells_, key_col_;  // the structure of the last rebuild
   std::vector<int> key_row_;
   long long offset_ = 0;

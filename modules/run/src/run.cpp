@@ -50,6 +50,7 @@ void Run::write_checkpoint(const std::string& path) const {
 
 void Run::checkpoint_now() {
   write_checkpoint(checkpoint_.directory + "/" + io::checkpoint_file_name(sim_.step_count()));
+  sim_.choose_pressure_rows_again();  // a run restarted here chooses them anew too
   io::prune_checkpoints(sim_.modules().comm, checkpoint_.directory, checkpoint_.keep);
 }
 

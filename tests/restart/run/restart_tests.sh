@@ -42,6 +42,8 @@ case_args() {  # name -> the case file and its overrides
     local r=(cases/dam_break/case.yaml --set grid/cell_size=0.004 --set output/png=false
              --set grid/rebalance_interval=4 --set grid/rebalance_gain=0 --set grid/ranks_x=3)
     echo "${r[@]}" ;;
+  # the pressure rows a kept band (solver/pressure_structure fixed), chosen again at checkpoints
+  disks_fixed) echo "${disks[@]} --set solver/pressure_structure=fixed --set solver/structure_margin=1" ;;
   *) echo "${disks[@]}" ;;
   esac
 }

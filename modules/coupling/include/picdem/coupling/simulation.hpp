@@ -93,6 +93,9 @@ class Simulation {
   /// grid/decomposition = weighted: new cut lines from the particles when they lighten the
   /// heaviest block by grid/rebalance_gain (also called every grid/rebalance_interval steps).
   void rebalance();
+  /// solver/pressure_structure fixed: the pressure solvers choose their rows again at the next
+  /// solve, as after a restart (called where a checkpoint is written: bitwise restarts).
+  void choose_pressure_rows_again();
 
   /// The grid's split over the ranks now, as strip starts {0, ..., nx} along x and {0, ..., nz}
   /// along z (ranks along x = x_cuts.size() - 1); weighted cuts move at each rebalance.

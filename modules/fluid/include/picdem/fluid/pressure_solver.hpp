@@ -8,9 +8,11 @@
 // a_{s,c} per cut cell c of solid s; M_s = diag(m, m, I); V* = V^n + dt M^-1 (F_g + F_coll).
 // Unknowns are the owned fluid cells, numbered by their global cell id k nx + i. The matrix is a
 // Tpetra::CrsMatrix whose structure (maps, graph, Export) is kept while the fluid mask and the
-// couplings' cells are unchanged (values refilled); the solids' term is a separate piece
-// (src/coupling_term.hpp), assembled into the matrix (solver/coupling_operator: assembled) or
-// applied beside it as dt U M^-1 U^T with MueLu built on the fluid rows (low_rank). Belos CG
+// couplings' cells are unchanged (values refilled), or with solver/pressure_structure fixed while
+// the fluid stays inside a kept band of rows (air and solid cells in it identity rows); the
+// solids' term is a separate piece (src/coupling_term.hpp), assembled into the matrix
+// (solver/coupling_operator: assembled) or applied beside it as dt U M^-1 U^T with MueLu built
+// on the fluid rows (low_rank). Belos CG
 // preconditioned by MueLu (a new hierarchy every solve) solves it starting from the previous
 // pressure. Tpetra, Belos and MueLu stay inside src/.
 #include <array>
@@ -99,6 +101,11 @@ class PressureSolver {
   /// order of AssembledSystem::rows): the assembled matrix, or with solver/coupling_operator
   /// low_rank the fluid rows plus the solids' low-rank term (for tests). Collective.
   std::vector<double> apply(const std::vector<double>& x) const;
+
+  /// solver/pressure_structure fixed: the band of rows is chosen again from the fluid cells at
+  /// the next solve, as a new solver would (called where a checkpoint is written, so that a run
+  /// restarted from it chooses the same rows as the run that wrote it: bitwise restarts).
+  void choose_rows_again();
 
   /// The loads J_s p + F_s on every solid of the couplings of the last solve() or assemble(),
   /// from the same rows a_{s,c} the matrix was assembled from (eq. 6; F_s: SolidCoupling::load);
