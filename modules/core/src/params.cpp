@@ -192,6 +192,49 @@ Params read_case_text(const std::string& text, const std::string& source,
   return schema.resolve(*list, overrides.empty() ? source : source + " (with --set overrides)");
 }
 
+Params resolve_written_case(const std::string& yaml, const std::string& source,
+                            const ParamSchema& schema) {
+  // Teuchos' reader refuses the empty arrays its writer prints ("key: []"): read the text without
+  // them, then put them back as empty real arrays (the only array kind of a case).
+  std::string text;
+  std::vector<std::pair<std::vector<std::string>, std::string>> empty_arrays;  // sublists, key
+  std::vector<std::pair<std::size_t, std::string>> open;  // indentation, name of each open sublist
+  std::istringstream in(yaml);
+  for (std::string line; std::getline(in, line);) {
+    const auto indent = line.find_first_not_of(' ');
+    const auto colon = line.find(": ");
+    const bool entry = indent != std::string::npos && colon != std::string::npos;
+    if (entry) {
+      while (!open.empty() && open.back().first >= indent) open.pop_back();
+      const std::string key = line.substr(indent, colon - indent);
+      const std::string value = line.substr(colon + 2);
+      if (value == "[]") {
+        std::vector<std::string> path;
+        for (std::size_t n = 1; n < open.size(); ++n) path.push_back(open[n].second);
+        empty_arrays.emplace_back(path, key);
+        continue;
+      }
+      if (value.find_first_not_of(' ') == std::string::npos) open.emplace_back(indent, key);
+    } else if (indent != std::string::npos && line.back() == ':') {
+      while (!open.empty() && open.back().first >= indent) open.pop_back();
+      open.emplace_back(indent, line.substr(indent, line.size() - 1 - indent));
+    }
+    text += line + "\n";
+  }
+  Teuchos::RCP<ParameterList> pl;
+  try {
+    pl = Teuchos::getParametersFromYamlString(text);
+  } catch (const std::exception& e) {
+    throw InputError(yaml_error_message(e.what(), source));
+  }
+  for (const auto& [path, key] : empty_arrays) {
+    ParameterList* list = pl.get();
+    for (const auto& name : path) list = &list->sublist(name);
+    list->set(key, Teuchos::Array<double>());
+  }
+  return schema.resolve(*pl, source);
+}
+
 std::string case_file_path(const Comm& comm, const std::string& path) {
   std::string file = path, problem;
   if (comm.is_root()) {

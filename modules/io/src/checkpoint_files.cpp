@@ -184,8 +184,15 @@ std::map<std::string, std::string> flat_case(const std::string& yaml, const std:
 }  // namespace
 
 std::vector<std::string> case_differences(const std::string& stored_yaml,
-                                          const core::Params& current) {
-  const auto a = flat_case(stored_yaml, "the checkpoint's case");
+                                          const core::Params& current,
+                                          const core::ParamSchema& schema) {
+  std::string stored = stored_yaml;
+  try {
+    stored = core::resolve_written_case(stored_yaml, "the checkpoint's case", schema).to_yaml();
+  } catch (const core::InputError&) {
+    // compared as written: the differences name the keys this picdem no longer accepts
+  }
+  const auto a = flat_case(stored, "the checkpoint's case");
   const auto b = flat_case(current.to_yaml(), "the current case");
   std::vector<std::string> diff;
   auto note = [&](const std::string& key, const std::string& x, const std::string& y) {

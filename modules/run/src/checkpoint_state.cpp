@@ -10,6 +10,7 @@
 
 #include "picdem/core/error.hpp"
 #include "picdem/core/timer.hpp"
+#include "picdem/coupling/schema.hpp"
 #include "picdem/dem/checkpoint.hpp"
 #include "picdem/fluid/checkpoint.hpp"
 #include "picdem/io/checkpoint_files.hpp"
@@ -88,7 +89,8 @@ CheckpointHeader read_header(const io::CheckpointReader& in, const CheckpointPar
                            " (written by picdem " + in.attribute_string("code_version") +
                            "); this picdem (" + io::code_version() + ") reads version " +
                            std::to_string(io::kCheckpointFormatVersion));
-  const auto diff = io::case_differences(in.attribute_string("case_yaml"), parts.params);
+  const auto diff =
+      io::case_differences(in.attribute_string("case_yaml"), parts.params, coupling::case_schema());
   if (!diff.empty()) {
     std::string m = where + " belongs to another case; these keys differ (checkpoint -> now):";
     for (const auto& d : diff) m += "\n  " + d;

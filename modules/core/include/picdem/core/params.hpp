@@ -156,6 +156,11 @@ std::string case_file_path(const Comm& comm, const std::string& path);
 Params read_case(const Comm& comm, const std::string& file,
                  const std::vector<std::string>& overrides, const ParamSchema& schema);
 
+/// Resolves a case written by Params::to_yaml (a checkpoint's case, possibly of an older picdem)
+/// against `schema`: keys declared since then take their defaults.
+Params resolve_written_case(const std::string& yaml, const std::string& source,
+                            const ParamSchema& schema);
+
 /// Validates YAML text (for tests and tools): parse + overrides + resolve.
 Params read_case_text(const std::string& text, const std::string& source,
                       const std::vector<std::string>& overrides, const ParamSchema& schema);

@@ -50,9 +50,13 @@ std::string code_version();
 /// layout (grid/ranks_x, grid/ranks_z), output/*, checkpoint/*, solver/*.
 bool key_may_change_on_restart(const std::string& path);
 /// The keys (outside key_may_change_on_restart) whose values differ between the two resolved
-/// cases, each as "key: stored -> current" ("(absent)" where one side lacks it).
+/// cases, each as "key: stored -> current" ("(absent)" where one side lacks it). The stored case
+/// is first resolved again by `schema`, so a key declared after the checkpoint was written counts
+/// as its default there (a new key's default keeps the behaviour of the code before it); when
+/// that fails (a key since removed or restricted) the two are compared as written.
 std::vector<std::string> case_differences(const std::string& stored_yaml,
-                                          const core::Params& current);
+                                          const core::Params& current,
+                                          const core::ParamSchema& schema);
 
 /// SIGTERM and SIGUSR1 set a flag instead of killing the process: the run finishes its step,
 /// writes a checkpoint and exits 0 (how batch schedulers stop jobs).
