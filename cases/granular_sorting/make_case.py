@@ -11,7 +11,10 @@ grains start highest on average, so that they can end lowest only by sorting, no
 container first. At t = 0 the grains run out through the slot and pile up below it.
 `python3 make_case.py reversed` writes the control: the same layers with heavy and light swapped
 (heavy, medium, light, heavy, medium, light from the bottom), so that the heavy grains leave first.
-Rerun after changing a constant: python3 make_case.py [reversed] > case.yaml
+`python3 make_case.py water` writes case_water.yaml: the case poured into water WATER_DEPTH deep
+over the whole tank (the issue's "into water"), with dt_max WATER_DT_MAX (the fluid's CFL rule sets
+the step below it).
+Rerun after changing a constant: python3 make_case.py [reversed | water] > case[_reversed|_water].yaml
 """
 import os
 import sys
@@ -24,10 +27,12 @@ import make_case as repose  # noqa: E402  (the cargo-dump geometry)
 
 DENSITIES = (1500, 2500, 3500)
 PER_LAYER, LAYER_H, T_END, MU = 50, 0.07, 2.5, 0.2
+WATER_DEPTH, WATER_DT_MAX = 0.1, 0.0005
 
 
 def main():
-    order = DENSITIES[::-1] if len(sys.argv) > 1 and sys.argv[1] == "reversed" else DENSITIES
+    variant = sys.argv[1] if len(sys.argv) > 1 else ""
+    order = DENSITIES[::-1] if variant == "reversed" else DENSITIES
     xc, mouth = repose.TANK_L / 2, repose.MOUTH_Z
     x0, x1 = xc - repose.BOX_W / 2, xc + repose.BOX_W / 2
     z = mouth + repose.WALL_T
@@ -37,13 +42,22 @@ def main():
         layers.append(gc.graded_yaml(
             f"layer_{k}", rho, [x0, z + k * LAYER_H, x1, z + (k + 1) * LAYER_H], "box", PER_LAYER,
             (0.009, 0.01, 0.011), k + 1))
+    head = gc.head_yaml("granular_sorting", repose.TANK_L, repose.TANK_H, T_END,
+                        [("mu", MU), ("tangential_model", "accumulated")])
+    medium = "dry"
+    if variant == "water":
+        medium = f"into water {WATER_DEPTH:g} m deep"
+        head = head.replace("name: granular_sorting", "name: granular_sorting_water").replace(
+            "out_granular_sorting", "out_granular_sorting_water").replace(
+            "dt_max: 0.0001", f"dt_max: {WATER_DT_MAX:g}") + (
+            f"\nwater:\n  pool:\n    type: box\n    x: [0, {repose.TANK_L:g}]\n"
+            f"    z: [0, {WATER_DEPTH:g}]")
     print(f"""# Gravity sorting (segregated lamination) of grains of three densities (Kim et al. 2018, sec. 5),
-# dry, in 2D. Written by make_case.py - edit that script, not this file. README.md says more.
+# {medium}, in 2D. Written by make_case.py - edit that script, not this file. README.md says more.
 # {6 * PER_LAYER} disks, d from 9 to 11 mm, densities {order[0]}, {order[1]}, {order[2]}, {order[0]}, {order[1]}, {order[2]} in six
 # layers from the bottom, in the cargo-dump container of
 # cases/angle_of_repose (slot 0.07 m wide, mouth {mouth:g} m above the toothed floor); they run out at t = 0.
-{gc.head_yaml("granular_sorting", repose.TANK_L, repose.TANK_H, T_END,
-             [("mu", MU), ("tangential_model", "accumulated")])}
+{head}
 obstacles:
 {gc.teeth_yaml(repose.TANK_L, repose.TOOTH_H, repose.TOOTH_P)}
 {gc.containers_yaml(*repose.containers(xc, mouth))}
