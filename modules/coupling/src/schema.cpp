@@ -26,10 +26,15 @@ void declare_case_and_time(core::ParamSchema& s) {
       .is_required();
   s.real("time/cfl", 0.5, "CFL number: dt <= cfl h / max|u| on the grid").positive().at_most(5.0);
   s.string("time/cfl_speed", "particles", {"particles", "grid"},
-           "the speed of the CFL bound: the largest of the grid's face velocities and the "
-           "particles' speeds (particles), or of the grid's face velocities, which move the "
-           "particles, and the solids' surface speeds (grid; doc/coupling.md)");
+           "the speed of the CFL bound: the largest of the grid's face velocities, which move the "
+           "particles, and the solids' surface speeds with gravity's change over the step (grid), "
+           "or of the grid's face velocities and the particles' own speeds (particles; "
+           "doc/coupling.md)");
   s.real("time/dt_max", 1e-3, "largest time step [s]").positive();
+  s.real("time/dt_growth", 1.2,
+         "time/cfl_speed grid: largest ratio of a time step to the last one: after a short step "
+         "(a fast flow, an impact) dt grows back gradually; a large value lifts the bound")
+      .at_least(1.0);
   s.real("time/dt_min", 1e-8, "smallest time step [s]; a step below it stops the run as blown up")
       .positive();
 }

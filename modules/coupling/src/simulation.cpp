@@ -45,6 +45,7 @@ struct Simulation::Impl {
   // the clock and what the last step reported
   double t = 0.0;
   long long step = 0;
+  double last_dt = 0.0;  // the last step's dt (time/dt_growth); 0 before the first
   Diagnostics diag;
   std::vector<core::SolidLoads> fluid_loads;     // J p + F_q of the last step, by id (all ranks)
   fluid::ViscousExchange viscous;                // the last step's viscous loads (implicit scheme)
@@ -194,12 +195,14 @@ void Simulation::step() {
   if (every > 0 && m.step > 0 && m.step % every == 0) rebalance_cuts(m);
   const Layout L = m.layout();
   fluid::FluidState* fluid = set.has_fluid ? &m.fluid : nullptr;
-  const double speed = cfl_extra_speed(set, m.particles, m.dem.get(), m.comm);  // time step
-  const double dt = fluid::choose_time_step(set.time, set.fluid, m.t, m.step, fluid, speed, m.comm);
+  const auto motion = cfl_extra_motion(set, m.particles, m.dem.get(), m.comm);  // time step
+  const double dt =
+      fluid::choose_time_step(set.time, set.fluid, m.t, m.step, fluid, motion, m.last_dt, m.comm);
   m.set.fluid.open.t0 = m.t, m.set.fluid.open.t1 = m.t + dt;  // the inflows over this step
   fluid::OpenFluxes open_flux;
   SolidsAtStart solids;  // at X^n
   fluid::SolveStats solve;
+  double advected = 0.0;
   if (fluid) {
     solids = place_solids(L, set, m.dem.get(), m.obstacles, m.fluid.apertures);  // geometry
     mark_cells(L, set, solids.cut, m.particles, m.occupancy, m.fluid);           // transfer
@@ -221,17 +224,18 @@ void Simulation::step() {
                                                         set.quadrature, m.obstacles.size());
     if (m.dem) m.fluid_loads = advance_solids(m.pressure.get(), fluid, dt, m.viscous, *m.dem);
     const SolidScene after = scene_of(m.dem.get(), m.obstacles);  // solids at X^{n+1}
-    grid_to_particles(L, set, solids, after, m.dem.get(), m.fluid, m.particles);    // transfer
-    advect_particles(L, set, m.step, solids.cut, after, dt, m.fluid, m.particles);  // advect
+    grid_to_particles(L, set, solids, after, m.dem.get(), m.fluid, m.particles);  // transfer
+    advected = advect_particles(L, set, m.step, solids.cut, after, dt, m.fluid, m.particles);
   } else if (m.dem) {
     m.fluid_loads = advance_solids(nullptr, nullptr, dt, {}, *m.dem);  // dry: solids only
   }
   m.t += dt;
   ++m.step;
+  m.last_dt = dt;
   std::vector<double> volumes = m.diag.open_volumes;
   if (volumes.size() == 2)
     volumes[0] += dt * open_flux.inflow, volumes[1] += dt * open_flux.outflow;
-  m.diag = record_diagnostics(L, set, m.t, m.step, dt, solve, m.particles, m.dem.get(),
+  m.diag = record_diagnostics(L, set, m.t, m.step, dt, advected, solve, m.particles, m.dem.get(),
                               fluid ? &solids : nullptr, m.occupancy, fluid);
   m.diag.open_volumes = volumes;
 }
@@ -272,8 +276,12 @@ void Simulation::choose_pressure_rows_again() {
   if (m_->density_solver) m_->density_solver->choose_rows_again();
 }
 
-void Simulation::resume(double t, long long step, const Diagnostics& diag) {
-  m_->t = t, m_->step = step, m_->diag = diag;
+void Simulation::resume(double t, long long step, double last_dt, const Diagnostics& diag) {
+  m_->t = t, m_->step = step, m_->last_dt = last_dt, m_->diag = diag;
+}
+
+double Simulation::last_time_step() const {
+  return m_->last_dt;
 }
 
 // weighted: the file's cut lines on the same rank count (they came from the state of the last

@@ -31,6 +31,8 @@ StepSettings step_settings_from(const core::Params& params) {
   s.time = {s.spec.h, params.real("time/cfl"), params.real("time/dt_max"),
             params.real("time/dt_min"), params.real("time/end")};
   s.cfl_from_particles = params.string("time/cfl_speed") == "particles";
+  // time/dt_growth bounds the grid rule; particles is kept as it was before issue 13
+  s.time.growth = s.cfl_from_particles ? 0.0 : params.real("time/dt_growth");
   s.has_fluid = !params.sublist_names("water").empty();
   s.beta = params.real("coupling/beta");
   s.viscous_rigid_rows = params.boolean("coupling/viscous_rigid_rows");
@@ -49,10 +51,12 @@ StepSettings step_settings_from(const core::Params& params) {
   return s;
 }
 
-double cfl_extra_speed(const StepSettings& set, const particles::ParticleSet& particles,
-                       const dem::DemSolver* dem, const core::Comm& comm) {
-  if (set.cfl_from_particles) return particles::max_speed(particles, comm);
-  return dem ? dem::max_surface_speed(*dem, comm) : 0.0;  // dem: on every rank or on none
+fluid::StepMotion cfl_extra_motion(const StepSettings& set, const particles::ParticleSet& particles,
+                                   const dem::DemSolver* dem, const core::Comm& comm) {
+  if (set.cfl_from_particles) return {particles::max_speed(particles, comm), 0.0};
+  if (!dem) return {};  // dem: on every rank or on none
+  const dem::SurfaceMotion s = dem::surface_motion(*dem, comm);
+  return {s.speed, s.accel};
 }
 
 // Built on every rank of a run with bodies, also where none is near this step: a rank a solid
@@ -257,17 +261,18 @@ bool correct_density(const Layout& L, const StepSettings& set, long long step,
 
 // A cut cell holds fewer particles than a full one (its fluid part is smaller): reseeding it up
 // to particles/min_per_cell would add water every step. Cut cells are left out of reseeding.
-void advect_particles(const Layout& L, const StepSettings& set, long long step,
-                      const geometry::CutCells& cut, const SolidScene& after, double dt,
-                      const fluid::FluidState& f, particles::ParticleSet& particles) {
+double advect_particles(const Layout& L, const StepSettings& set, long long step,
+                        const geometry::CutCells& cut, const SolidScene& after, double dt,
+                        const fluid::FluidState& f, particles::ParticleSet& particles) {
   core::ScopedTimer timer("advect");
   const SolidLocator locator(after);
   const bool solids = set.has_bodies;
   const auto out_of_solids = push_out_of_solids(set, locator);
   // A blown-up advection is found on one rank: stop every rank with the message, never just one.
   std::string failure;
+  double moved = 0.0;
   try {
-    particles::advect(particles, set.particles, f.u, f.w, set.spec, dt, out_of_solids);
+    moved = particles::advect(particles, set.particles, f.u, f.w, set.spec, dt, out_of_solids);
   } catch (const core::SolverError& e) {
     failure = e.what();
   }
@@ -299,16 +304,18 @@ void advect_particles(const Layout& L, const StepSettings& set, long long step,
   // Rank by rank (reseed has no collective): a rank with nothing to change is left as it is.
   if (particles::reseed_changes(set.particles, L.d, count, *states))
     particles::reseed(particles, set.particles, L.d, count, *states, f.u, f.w, step, reject);
+  return L.comm.max(moved);
 }
 
 Diagnostics record_diagnostics(const Layout& L, const StepSettings& set, double t, long long step,
-                               double dt, const fluid::SolveStats& solve,
+                               double dt, double advected, const fluid::SolveStats& solve,
                                const particles::ParticleSet& P, const dem::DemSolver* dem,
                                const SolidsAtStart* solids, particles::OccupancyPass& occ,
                                fluid::FluidState* fluid) {
   const core::Comm& comm = L.comm;
   Diagnostics g;
   g.t = t, g.dt = dt, g.step = step;
+  g.advected = advected;
   g.ppe_iterations = solve.iterations;
   g.ppe_residual = solve.relative_residual;
   g.ppe_structure_reused = solve.reused_structure;
@@ -333,7 +340,6 @@ Diagnostics record_diagnostics(const Layout& L, const StepSettings& set, double 
     const geometry::CutCells* cut = set.has_bodies ? &solids->cut : nullptr;
     if (cut) fluid::open_share_correction(fluid->occupancy, *cut, L.d);
     g.fluid_volume = fluid::occupied_area(fluid->occupancy, L.d, comm, cut);
-    if (!set.cfl_from_particles) g.grid_speed = fluid::max_face_speed(fluid->u, fluid->w, comm);
   }
   for (double x : set.level_probes)
     g.levels.push_back(fluid ? fluid->surface_height(x) : std::nan(""));

@@ -60,11 +60,11 @@ struct SolidsAtStart {
   geometry::CutCells cut;
 };
 
-/// The speed besides the grid's face velocities that bounds the step (time/cfl_speed): the
-/// particles' fastest speed (particles::max_speed), or the solids' fastest surface speed
-/// (dem::max_surface_speed). Collective.
-double cfl_extra_speed(const StepSettings& set, const particles::ParticleSet& particles,
-                       const dem::DemSolver* dem, const core::Comm& comm);
+/// What besides the grid's face velocities bounds the step (time/cfl_speed), from its owner: the
+/// particles' fastest speed (particles::max_speed), or the solids' surface motion
+/// (dem::surface_motion: speed and gravity's change). Collective.
+fluid::StepMotion cfl_extra_motion(const StepSettings& set, const particles::ParticleSet& particles,
+                                   const dem::DemSolver* dem, const core::Comm& comm);
 
 /// geometry: solids at X^n -> cut cells and the fluid's apertures E.
 SolidsAtStart place_solids(const Layout& L, const StepSettings& set, const dem::DemSolver* dem,
@@ -127,15 +127,16 @@ void grid_to_particles(const Layout& L, const StepSettings& set, const SolidsAtS
                        particles::ParticleSet& particles);
 
 /// advect: through the divergence-free field, out of the solids at X^{n+1}, migrate, reseed.
-void advect_particles(const Layout& L, const StepSettings& set, long long step,
-                      const geometry::CutCells& cut, const SolidScene& after, double dt,
-                      const fluid::FluidState& fluid, particles::ParticleSet& particles);
+/// Returns the largest distance the grid velocity moved a particle (collective: every rank's).
+double advect_particles(const Layout& L, const StepSettings& set, long long step,
+                        const geometry::CutCells& cut, const SolidScene& after, double dt,
+                        const fluid::FluidState& fluid, particles::ParticleSet& particles);
 
 /// Figures of the state after the step (t, step: its end); a non-finite particle or solid
 /// anywhere stops the run on every rank. fluid/solids: nullptr without water. The occupancy of
-/// the particles is left in `occ` for the next step.
+/// the particles is left in `occ` for the next step. advected: advect_particles'.
 Diagnostics record_diagnostics(const Layout& L, const StepSettings& set, double t, long long step,
-                               double dt, const fluid::SolveStats& solve,
+                               double dt, double advected, const fluid::SolveStats& solve,
                                const particles::ParticleSet& particles, const dem::DemSolver* dem,
                                const SolidsAtStart* solids, particles::OccupancyPass& occ,
                                fluid::FluidState* fluid);

@@ -5,12 +5,13 @@
 
 namespace picdem::dem {
 
-double max_surface_speed(const DemSolver& dem, const core::Comm& comm) {
+SurfaceMotion surface_motion(const DemSolver& dem, const core::Comm& comm) {
   double vmax = 0.0;
   for (const auto& s : dem.owned())
     vmax = std::max(vmax, std::sqrt(s.v.x * s.v.x + s.v.z * s.v.z) +
                               std::abs(s.omega) * dem.shape_of(s.id)->bounding_radius());
-  return comm.max(vmax);
+  const core::Vec2 g = dem.config().gravity;
+  return {comm.max(vmax), std::sqrt(g.x * g.x + g.z * g.z)};
 }
 
 OwnedFigures owned_figures(const DemSolver& dem, const std::vector<double>& box) {

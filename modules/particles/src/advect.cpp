@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cmath>
 
 #include "picdem/core/timer.hpp"
 #include "picdem/particles/motion.hpp"
@@ -7,9 +8,9 @@
 
 namespace picdem::particles {
 
-void advect(ParticleSet& p, const ParticleConfig& config, const grid::FaceField& u,
-            const grid::FaceField& w, const grid::GridSpec& s, double dt,
-            const std::function<void(double& x, double& z)>& push_out) {
+double advect(ParticleSet& p, const ParticleConfig& config, const grid::FaceField& u,
+              const grid::FaceField& w, const grid::GridSpec& s, double dt,
+              const std::function<void(double& x, double& z)>& push_out) {
   core::ScopedTimer timer("particles: advect");
   // a position that would leave the tank is put back this far inside the wall
   const double gap = 1e-6 * s.h;
@@ -27,6 +28,7 @@ void advect(ParticleSet& p, const ParticleConfig& config, const grid::FaceField&
     return core::Vec2{detail::interpolate(u, su), detail::interpolate(w, sw)};
   };
   const bool rk3 = config.advection == AdvectionScheme::Rk3;
+  double moved2 = 0.0;  // the largest |x^{n+1} - x^n|^2 the grid velocity gave
   for (std::size_t n = 0; n < p.size(); ++n) {
     const core::Vec2 x0{p.x[n], p.z[n]};
     const core::Vec2 k1 = v(x0);
@@ -42,6 +44,8 @@ void advect(ParticleSet& p, const ParticleConfig& config, const grid::FaceField&
       const core::Vec2 k3 = v(in_tank(x0 + 0.75 * dt * k2));
       x1 = x0 + (dt / 9.0) * (2.0 * k1 + 3.0 * k2 + 4.0 * k3);
     }
+    const core::Vec2 d = x1 - x0;
+    moved2 = std::max(moved2, d.x * d.x + d.z * d.z);
     x1 = in_tank(x1);
     if (push_out) {
       push_out(x1.x, x1.z);
@@ -50,6 +54,7 @@ void advect(ParticleSet& p, const ParticleConfig& config, const grid::FaceField&
     p.x[n] = x1.x;
     p.z[n] = x1.z;
   }
+  return std::sqrt(moved2);
 }
 
 }  // namespace picdem::particles

@@ -20,7 +20,7 @@
 namespace picdem::run {
 
 // Layout (doc/restart.md); each module writes and reads its own group:
-//   attributes: format_version, code_version, case_yaml, t, step, ranks, has_fluid,
+//   attributes: format_version, code_version, case_yaml, t, step, last_dt, ranks, has_fluid,
 //               diagnostics (the scalars of coupling::Diagnostics in declaration order),
 //               diagnostics_solids_in_box, diagnostics_levels (when there are probes),
 //               output_next_frame, output_frames, output_last_frame_step
@@ -47,6 +47,7 @@ void write_header(io::CheckpointWriter& out, const CheckpointParts& parts,
   out.attribute("case_yaml", parts.params.to_yaml());
   out.attribute("t", head.t);
   out.attribute("step", head.step);
+  out.attribute("last_dt", head.last_dt);
   out.attribute("ranks", static_cast<long long>(parts.comm.size()));
   out.attribute("has_fluid", static_cast<long long>(parts.fluid ? 1 : 0));
   out.attribute("diagnostics", diagnostic_scalars(head.diag));
@@ -109,6 +110,8 @@ CheckpointHeader read_header(const io::CheckpointReader& in, const CheckpointPar
       throw core::InputError(where + ": attribute 'diagnostics' has " + std::to_string(v.size()) +
                              " values, expected " + std::to_string(diagnostic_names().size()));
     set_diagnostic_scalars(head.diag, v);
+    // files from before time/dt_growth: the recorded dt of the last step is the same number
+    head.last_dt = in.has_attribute("last_dt") ? in.attribute_double("last_dt") : head.diag.dt;
     if (in.has_attribute("diagnostics_solids_in_box"))
       head.diag.solids_in_box = in.attribute_int("diagnostics_solids_in_box");
     if (in.has_attribute("diagnostics_levels"))
@@ -138,14 +141,14 @@ CheckpointHeader read_checkpoint(const CheckpointParts& parts, const std::string
 
 void check_step(const coupling::Diagnostics& g, double h, bool has_fluid, bool grid_speed,
                 const dem::DemSolver* dem, const core::Comm& comm) {
-  // CFL far exceeded: |v| dt > 2 h for the fastest particle, or for the grid velocity that
-  // advected the particles.
-  const double v = grid_speed ? g.grid_speed : g.max_speed;
-  if (has_fluid && v * g.dt > 2.0 * h) {
+  // CFL far exceeded: |v| dt > 2 h for the fastest particle, or the distance the grid velocity
+  // moved a particle (what the particles met; a fast face no particle samples moves none).
+  const double moved = grid_speed ? g.advected : g.max_speed * g.dt;
+  if (has_fluid && moved > 2.0 * h) {
     std::ostringstream m;
     m << "step " << g.step << " at t = " << g.t
       << " s: " << (grid_speed ? "the grid velocity moved a particle " : "a particle moved ")
-      << v * g.dt / h << " cells in one step (speed " << v << " m/s, dt " << g.dt
+      << moved / h << " cells in one step (speed " << moved / g.dt << " m/s, dt " << g.dt
       << " s); more than 2 cells means the CFL condition is far exceeded: the run has "
       << "blown up";
     throw core::SolverError(m.str());

@@ -18,6 +18,7 @@ namespace picdem::run {
 struct CheckpointHeader {
   double t = 0.0;
   long long step = 0;
+  double last_dt = 0.0;  ///< the last step's dt, state of the time-step rule (time/dt_growth)
   coupling::Diagnostics diag;
   Output::Mark mark;
 };
@@ -37,7 +38,8 @@ CheckpointHeader read_checkpoint(const CheckpointParts& parts, const std::string
 
 /// Collective, after every step (g: its diagnostics): throws core::SolverError naming the step
 /// when the step blew up: a particle moved more than 2 h (CFL far exceeded; the particles' speed
-/// times dt, or with `grid_speed` (time/cfl_speed: grid) the grid's, which moves them), or a
+/// times dt, or with `grid_speed` (time/cfl_speed: grid) the distance the grid velocity moved
+/// them, Diagnostics::advected), or a
 /// solid's real boundary overlaps another solid, a wall or an obstacle (DEM overlap delta beyond
 /// the imaginary gap, eq. 19).
 void check_step(const coupling::Diagnostics& g, double h, bool has_fluid, bool grid_speed,

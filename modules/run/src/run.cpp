@@ -22,7 +22,7 @@ void Run::restart_from(const std::string& checkpoint, const std::string& output_
   const core::Comm& comm = sim_.modules().comm;
   const bool adopted = sim_.take_cuts_of(io::checkpoint_cell_boxes(comm, checkpoint));
   const CheckpointHeader head = read_checkpoint(sim_.modules(), checkpoint);
-  sim_.resume(head.t, head.step, head.diag);
+  sim_.resume(head.t, head.step, head.last_dt, head.diag);
   if (!adopted) sim_.rebalance();
   restarted_ = true;
   output_.reset();
@@ -43,8 +43,8 @@ void Run::enable_checkpoints(const std::string& directory) {
 }
 
 void Run::write_checkpoint(const std::string& path) const {
-  const CheckpointHeader head{sim_.time(), sim_.step_count(), sim_.diagnostics(),
-                              output_ ? output_->mark() : Output::Mark{}};
+  const CheckpointHeader head{sim_.time(), sim_.step_count(), sim_.last_time_step(),
+                              sim_.diagnostics(), output_ ? output_->mark() : Output::Mark{}};
   run::write_checkpoint(sim_.modules(), head, path);
 }
 

@@ -40,22 +40,22 @@ TEST(TimeStep, SmallestOfTheBounds) {
   cfg.h = 0.01, cfg.nu = 1e-6;  // h^2 / (4 nu) = 25 s: not the bound
   const double tol = 1e-18;
   // without water: dt_max, whatever the speed
-  EXPECT_EQ(fluid::choose_time_step(limits, cfg, 0.0, 0, nullptr, 7.0, t.comm), 0.01);
+  EXPECT_EQ(fluid::choose_time_step(limits, cfg, 0.0, 0, nullptr, {7.0}, 0.0, t.comm), 0.01);
   // the grid: 0.5 0.01 / 2 = 2.5e-3
-  EXPECT_NEAR(fluid::choose_time_step(limits, cfg, 0.0, 0, &t.f, 0.0, t.comm), 2.5e-3, tol);
+  EXPECT_NEAR(fluid::choose_time_step(limits, cfg, 0.0, 0, &t.f, {0.0}, 0.0, t.comm), 2.5e-3, tol);
   // a particle or solid surface at 5 m/s: 0.5 0.01 / 5 = 1e-3
-  EXPECT_NEAR(fluid::choose_time_step(limits, cfg, 0.0, 0, &t.f, 5.0, t.comm), 1e-3, tol);
+  EXPECT_NEAR(fluid::choose_time_step(limits, cfg, 0.0, 0, &t.f, {5.0}, 0.0, t.comm), 1e-3, tol);
   // one slower than the grid changes nothing
-  EXPECT_NEAR(fluid::choose_time_step(limits, cfg, 0.0, 0, &t.f, 1.0, t.comm), 2.5e-3, tol);
+  EXPECT_NEAR(fluid::choose_time_step(limits, cfg, 0.0, 0, &t.f, {1.0}, 0.0, t.comm), 2.5e-3, tol);
   // dt_max below them all
   fluid::TimeStepLimits capped = limits;
   capped.dt_max = 4e-4;
-  EXPECT_EQ(fluid::choose_time_step(capped, cfg, 0.0, 0, &t.f, 5.0, t.comm), 4e-4);
+  EXPECT_EQ(fluid::choose_time_step(capped, cfg, 0.0, 0, &t.f, {5.0}, 0.0, t.comm), 4e-4);
   // explicit viscosity nu = 0.5: h^2 / (4 nu) = 5e-5; none with the implicit scheme
   cfg.nu = 0.5;
-  EXPECT_NEAR(fluid::choose_time_step(limits, cfg, 0.0, 0, &t.f, 0.0, t.comm), 5e-5, tol);
+  EXPECT_NEAR(fluid::choose_time_step(limits, cfg, 0.0, 0, &t.f, {0.0}, 0.0, t.comm), 5e-5, tol);
   cfg.implicit_viscosity = true;
-  EXPECT_NEAR(fluid::choose_time_step(limits, cfg, 0.0, 0, &t.f, 0.0, t.comm), 2.5e-3, tol);
+  EXPECT_NEAR(fluid::choose_time_step(limits, cfg, 0.0, 0, &t.f, {0.0}, 0.0, t.comm), 2.5e-3, tol);
 }
 
 // Below time/dt_min the run has blown up, unless the end is nearer than dt_min.
@@ -66,7 +66,7 @@ TEST(TimeStep, CollapseBelowDtMinStopsTheRun) {
   cfg.h = 0.01;
   // a speed of 50 m/s: 1e-4 < dt_min
   try {
-    fluid::choose_time_step(limits, cfg, 0.25, 7, &t.f, 50.0, t.comm);
+    fluid::choose_time_step(limits, cfg, 0.25, 7, &t.f, {50.0}, 0.0, t.comm);
     ADD_FAILURE() << "no SolverError";
   } catch (const core::SolverError& e) {
     const std::string what = e.what();
@@ -74,5 +74,6 @@ TEST(TimeStep, CollapseBelowDtMinStopsTheRun) {
     EXPECT_NE(what.find("below time/dt_min"), std::string::npos) << what;
   }
   // 5e-4 before the end (less than dt_min): the short step is taken
-  EXPECT_NEAR(fluid::choose_time_step(limits, cfg, 0.9995, 7, &t.f, 50.0, t.comm), 1e-4, 1e-18);
+  EXPECT_NEAR(fluid::choose_time_step(limits, cfg, 0.9995, 7, &t.f, {50.0}, 0.0, t.comm), 1e-4,
+              1e-18);
 }

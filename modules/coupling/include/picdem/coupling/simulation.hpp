@@ -44,7 +44,7 @@ struct Diagnostics {
   long long particles = 0;
   double max_speed = 0.0;
   double solid_kinetic_energy = 0.0;
-  double grid_speed = 0.0;      ///< largest |u|, |w| on the faces after the step [m/s] (not in csv)
+  double advected = 0.0;  ///< largest distance the grid velocity moved a particle [m] (not in csv)
   std::vector<double> levels;   ///< free-surface height at output/level_probes [m]
   long long solids_in_box = 0;  ///< solids with their centre in output/solid_count_box
   /// With open sides (open/): the volumes that entered through the inflows and left through the
@@ -84,8 +84,11 @@ class Simulation {
     dem::DemSolver* dem;
   };
   Modules modules();
-  /// After a restore of the modules: the clock and the last step's records of the checkpoint.
-  void resume(double t, long long step, const Diagnostics& diag);
+  /// After a restore of the modules: the clock, the last step's dt (the time-step rule's
+  /// time/dt_growth bound) and the last step's records of the checkpoint.
+  void resume(double t, long long step, double last_dt, const Diagnostics& diag);
+  /// The dt of the last step (0 before the first): state of the time-step rule.
+  double last_time_step() const;
   /// Before a restore: grid/decomposition = weighted on more than one rank with water takes the
   /// cut lines of a checkpoint's owned cell boxes (io::checkpoint_cell_boxes) when they fit this
   /// run (rank count, grid/ranks_x, grid/ranks_z). Returns whether it did.

@@ -8,9 +8,15 @@
 
 namespace picdem::dem {
 
-/// Collective: the largest surface speed |v| + |omega| R of the solids (R the bounding radius)
-/// over all ranks; 0 without solids.
-double max_surface_speed(const DemSolver& dem, const core::Comm& comm);
+/// How fast the solids' surfaces (and with them the cut cells and the rigid face velocities) may
+/// move over the coming fluid step: a surface point moves at most (speed + accel dt) dt in dt.
+struct SurfaceMotion {
+  double speed = 0.0;  ///< the largest |v| + |omega| R over the solids (R the bounding radius)
+  double accel = 0.0;  ///< |g|: the velocity change per second gravity predicts (eq. 21, step 1)
+};
+/// Collective: the SurfaceMotion of every rank's solids (speed 0 without solids). The fluid and
+/// contact loads of the coming step are not known before it; gravity's change is.
+SurfaceMotion surface_motion(const DemSolver& dem, const core::Comm& comm);
 
 /// This rank's owned solids (not collective).
 struct OwnedFigures {

@@ -13,10 +13,11 @@ namespace picdem::particles {
 /// (Ralston) over dt. Every stage is kept inside the tank: a position that would leave is put
 /// back just inside the wall (1e-6 h). push_out, if given, then moves a particle out of solids,
 /// and the result is kept inside the tank again. Needs |v| dt <= 2 h (see required_halo);
-/// throws core::SolverError when a stage leaves the halo.
-void advect(ParticleSet& particles, const ParticleConfig& config, const grid::FaceField& u,
-            const grid::FaceField& w, const grid::GridSpec& spec, double dt,
-            const std::function<void(double& x, double& z)>& push_out = {});
+/// throws core::SolverError when a stage leaves the halo. Returns the largest distance the grid
+/// velocity moved one of this rank's particles (before the tank's walls and push_out act).
+double advect(ParticleSet& particles, const ParticleConfig& config, const grid::FaceField& u,
+              const grid::FaceField& w, const grid::GridSpec& spec, double dt,
+              const std::function<void(double& x, double& z)>& push_out = {});
 
 /// Keeps the particles per cell within [min_per_cell, max_per_cell]:
 /// - in every owned cell above max_per_cell, the particles with the largest ids are removed;
