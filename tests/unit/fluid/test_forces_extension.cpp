@@ -15,8 +15,8 @@ using namespace picdem::grid;
 
 namespace {
 
-constexpr signed char kAir = static_cast<signed char>(CellState::Air);
-constexpr signed char kFluid = static_cast<signed char>(CellState::Fluid);
+using fluid_test::kAir;
+using fluid_test::kFluid;
 
 GridSpec make_spec(int nx, int nz, double h) {
   GridSpec s;

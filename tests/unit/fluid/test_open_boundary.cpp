@@ -19,8 +19,8 @@ using namespace picdem::grid;
 
 namespace {
 
-constexpr signed char kAir = static_cast<signed char>(CellState::Air);
-constexpr signed char kFluid = static_cast<signed char>(CellState::Fluid);
+using fluid_test::kAir;
+using fluid_test::kFluid;
 
 /// Every cell of the grid fluid, the cells beyond the tank air (no particle ever reaches them:
 /// what mark_cells makes of them).

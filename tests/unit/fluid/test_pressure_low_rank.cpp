@@ -19,43 +19,28 @@ using namespace picdem::grid;
 
 namespace {
 
-constexpr signed char kAir = static_cast<signed char>(CellState::Air);
-constexpr signed char kFluid = static_cast<signed char>(CellState::Fluid);
+using fluid_test::kAir;
+using fluid_test::kFluid;
 
 /// 80 x 40 cells of h = 0.0125: fluid for i < 48 or k < 8, up to k = 32; random velocities.
-struct CoupledSystem {
+struct CoupledSystem : fluid_test::TankFields {
   core::Params assembled, low_rank;
-  GridSpec s;
-  Decomposition d;
-  Halo halo;
-  fluid::CellStates cells;
-  fluid::Apertures E;
-  FaceField u, w;
-  fluid::FluidConfig cfg;
-  std::vector<fluid::SolidCoupling> solids;
+
+  static core::Params params(const std::string& coupling_operator) {
+    return fluid_test::tank_params(
+        1.0, 0.5, 0.0125,
+        {"solver/tolerance=1e-11", "solver/coupling_operator=" + coupling_operator});
+  }
 
   explicit CoupledSystem(const core::Comm& comm)
-      : assembled(fluid_test::tank_params(
-            1.0, 0.5, 0.0125, {"solver/tolerance=1e-11", "solver/coupling_operator=assembled"})),
-        low_rank(fluid_test::tank_params(
-            1.0, 0.5, 0.0125, {"solver/tolerance=1e-11", "solver/coupling_operator=low_rank"})),
-        s(spec_from(assembled)),
-        d(s, comm, 1),
-        halo(d),
-        cells(d, Stagger::Cell, kAir),
-        E(fluid::open_apertures(d)),
-        u(d, Stagger::FaceX, 0.0),
-        w(d, Stagger::FaceZ, 0.0),
-        cfg(fluid::config_from(assembled)) {
+      : TankFields(params("assembled"), comm),
+        assembled(params("assembled")),
+        low_rank(params("low_rank")) {
     const auto& cb = cells.storage();
     for (int k = cb.k0; k < cb.k1; ++k)
       for (int i = cb.i0; i < cb.i1; ++i)
         if (i >= 0 && k >= 0 && i < s.nx && k < 32 && (i < 48 || k < 8)) cells(i, k) = kFluid;
-    for (FaceField* f : {&u, &w})
-      for (int k = f->owned().k0; k < f->owned().k1; ++k)
-        for (int i = f->owned().i0; i < f->owned().i1; ++i)
-          (*f)(i, k) = 0.2 * (core::uniform01(9, f == &u, i, k) - 0.5);
-    halo.forward(u), halo.forward(w);
+    random_velocities(9);
     // Solid 1 cuts (22..41, 16/17), across the rank boundary; solid 2 cuts (41..46, 17/18),
     // sharing cell (41, 17) with solid 1. Each cell listed by the rank that owns it.
     fluid::SolidCoupling one, two;

@@ -14,8 +14,8 @@ using namespace picdem::grid;
 
 namespace {
 
-constexpr signed char kAir = static_cast<signed char>(CellState::Air);
-constexpr signed char kFluid = static_cast<signed char>(CellState::Fluid);
+using fluid_test::kAir;
+using fluid_test::kFluid;
 
 using Rows = std::map<long long, std::map<long long, double>>;
 

@@ -17,9 +17,9 @@ using namespace picdem::grid;
 
 namespace {
 
-constexpr signed char kAir = static_cast<signed char>(CellState::Air);
-constexpr signed char kFluid = static_cast<signed char>(CellState::Fluid);
-constexpr signed char kSolid = static_cast<signed char>(CellState::Solid);
+using fluid_test::kAir;
+using fluid_test::kFluid;
+using fluid_test::kSolid;
 
 /// Dam-break-like column: fluid for i < nx/2 and k < 3 nz/4 (and a thin layer on the rest of
 /// the floor), air elsewhere; halo filled too.

@@ -20,46 +20,22 @@ using namespace picdem::grid;
 
 namespace {
 
-constexpr signed char kAir = static_cast<signed char>(CellState::Air);
-constexpr signed char kFluid = static_cast<signed char>(CellState::Fluid);
-constexpr signed char kSolid = static_cast<signed char>(CellState::Solid);
+using fluid_test::kAir;
+using fluid_test::kFluid;
+using fluid_test::kSolid;
 
 /// 64 x 32 cells of h = 0.0125: water below a sloping surface (k < level - i / 8), a block of
 /// solid cells (30..33, 0..3) in it, and one solid cutting cells (10..25, 12/13).
-struct SurfaceTank {
+struct SurfaceTank : fluid_test::TankFields {
   core::Params active, fixed, whole;
-  GridSpec s;
-  Decomposition d;
-  Halo halo;
-  fluid::CellStates cells;
-  fluid::Apertures E;
-  FaceField u, w;
-  fluid::FluidConfig cfg;
-  std::vector<fluid::SolidCoupling> solids;
 
   explicit SurfaceTank(const core::Comm& comm)
-      : active(fluid_test::tank_params(
-            0.8, 0.4, 0.0125, {"solver/tolerance=1e-11", "solver/pressure_structure=active"})),
-        fixed(fluid_test::tank_params(0.8, 0.4, 0.0125,
-                                      {"solver/tolerance=1e-11", "solver/pressure_structure=fixed",
-                                       "solver/structure_margin=4"})),
-        whole(fluid_test::tank_params(0.8, 0.4, 0.0125,
-                                      {"solver/tolerance=1e-11", "solver/pressure_structure=fixed",
-                                       "solver/structure_margin=64"})),
-        s(spec_from(active)),
-        d(s, comm, 1),
-        halo(d),
-        cells(d, Stagger::Cell, kAir),
-        E(fluid::open_apertures(d)),
-        u(d, Stagger::FaceX, 0.0),
-        w(d, Stagger::FaceZ, 0.0),
-        cfg(fluid::config_from(active)) {
+      : TankFields(params("active", 4), comm),
+        active(params("active", 4)),
+        fixed(params("fixed", 4)),
+        whole(params("fixed", 64)) {
     set_level(22);
-    for (FaceField* f : {&u, &w})
-      for (int k = f->owned().k0; k < f->owned().k1; ++k)
-        for (int i = f->owned().i0; i < f->owned().i1; ++i)
-          (*f)(i, k) = 0.2 * (core::uniform01(5, f == &u, i, k) - 0.5);
-    halo.forward(u), halo.forward(w);
+    random_velocities(5);
     fluid::SolidCoupling one;
     one.id = 7, one.mass = 0.3, one.inertia = 1e-3, one.v_star = {0.1, -0.2, 0.5};
     for (int n = 0; n < 32; ++n) {
@@ -69,6 +45,13 @@ struct SurfaceTank {
       one.a.push_back({0.01 * std::cos(0.4 * n), 0.01 * std::sin(0.4 * n), 1e-4 * (n - 15.5)});
     }
     solids = {one};
+  }
+
+  static core::Params params(const std::string& structure, int margin) {
+    return fluid_test::tank_params(
+        0.8, 0.4, 0.0125,
+        {"solver/tolerance=1e-11", "solver/pressure_structure=" + structure,
+         "solver/structure_margin=" + std::to_string(margin)});
   }
 
   /// Water below k = level - i / 8, the solid block, air elsewhere (halo included).
