@@ -84,15 +84,17 @@ dem:
   theta: 0.002"""
 
 
-def graded_yaml(name, density, region, placement, count, sizes, seed, drops=None):
+def graded_yaml(name, density, region, placement, count, sizes, seed, drops=None,
+                friction=None):
     """One `graded_packing` entry of `solids`: disks of d_min, d50, d_max = sizes (uniform in
     ln d by number) in region [x0, z0, x1, z1]; drops: the pour's tries per grain (generator's
-    default when None)."""
+    default when None); friction: the grains' own friction coefficient (dem/mu when None)."""
     d_min, d50, d_max = sizes
     tries = f"\n    drops: {drops}" if drops is not None else ""
+    mu = f"\n    friction: {friction:g}" if friction is not None else ""
     return f"""  {name}:
     type: graded_packing
-    density: {density}
+    density: {density}{mu}
     region: {fmt(region)}
     placement: {placement}{tries}
     count: {count}

@@ -9,7 +9,9 @@ teeth's tips, their mean depth below the heap's surface (the highest heap grain'
 the grain's 10 mm bin) and their mean distance from the slot's axis; at the end also the mean height of each population relative to the mean of all
 grains in the heap, and the share of each population in the lowest and highest third of the
 heap's grains (ranked by height).
-Writes OUT_DIR/sorting.csv and, with matplotlib, OUT_DIR/granular_sorting.png.
+Writes OUT_DIR/sorting.csv (per output time and population: count, mean height, mean distance
+from the axis and mean depth below the surface, the segregation measure) and, with matplotlib,
+OUT_DIR/granular_sorting.png.
 usage: analyse.py OUT_DIR
 """
 import os
@@ -100,10 +102,17 @@ def main():
               f"{m['reach'][k] * 1000:.1f} mm, share of the lowest third {m['low'][k]:.2f}, of the highest third "
               f"{m['high'][k]:.2f}")
     with open(os.path.join(out, "sorting.csv"), "w") as f:
-        f.write("t," + ",".join(f"n_{s},mean_z_{s},mean_r_{s}" for s in NAMES) + "\n")
+        f.write("t," + ",".join(f"n_{s},mean_z_{s},mean_r_{s},depth_{s}" for s in NAMES) + "\n")
         for t, s in m["series"]:
-            f.write(f"{t:.4g}," + ",".join(f"{s['n'][k]},{s['mean'][k]:.6g},{s['reach'][k]:.6g}"
-                                            for k in range(3)) + "\n")
+            f.write(f"{t:.4g}," + ",".join(
+                f"{s['n'][k]},{s['mean'][k]:.6g},{s['reach'][k]:.6g},{s['depth'][k]:.6g}"
+                for k in range(3)) + "\n")
+    print("depth below the surface over time [mm] (grains in the heap):")
+    print("   t  " + "  ".join(f"{n:>13s}" for n in NAMES))
+    for t, s in m["series"]:
+        if abs(t / 0.5 - round(t / 0.5)) < 1e-6 and t > 0:
+            print(f"{t:4.1f}  " + "  ".join(f"{s['depth'][k] * 1000:7.1f} ({s['n'][k]:3d})"
+                                           for k in range(3)))
     plot(os.path.join(out, "solids.csv"), m, out)
 
 
@@ -113,23 +122,28 @@ def plot(path, m, out):
         return
     fr = gc.frames(path, ids=True)
     last = fr[max(fr)]
-    fig, ax = plt.subplots(1, 2, figsize=(11, 3.8))
+    fig, ax = plt.subplots(1, 3, figsize=(15, 3.8))
     colors = ("tab:orange", "tab:green", "tab:blue")
     for k in range(3):
         t = [t for t, s in m["series"] if s["n"][k]]
         z = [s["mean"][k] * 1000 for _, s in m["series"] if s["n"][k]]
+        d = [s["depth"][k] * 1000 for _, s in m["series"] if s["n"][k]]
         ax[0].plot(t, z, color=colors[k], label=f"{NAMES[k]} ({DENSITIES[k]} kg/m^3)")
+        ax[1].plot(t, d, color=colors[k], label=NAMES[k])
         xs = [x for i, x, z, _ in last if population(i) == k]
         zs = [z for i, x, z, _ in last if population(i) == k]
-        ax[1].scatter(xs, zs, s=9, color=colors[k], label=NAMES[k])
+        ax[2].scatter(xs, zs, s=9, color=colors[k], label=NAMES[k])
     ax[0].set_xlabel("t [s]")
     ax[0].set_ylabel("mean height in the heap [mm]")
     ax[0].legend(fontsize=7)
-    ax[1].set_aspect("equal")
-    ax[1].set_xlim(0.45, 1.15)
-    ax[1].set_ylim(0, 0.35)
-    ax[1].set_title(f"t = {m['t_end']:.2f} s", fontsize=9)
+    ax[1].set_xlabel("t [s]")
+    ax[1].set_ylabel("mean depth below the heap's surface [mm]")
     ax[1].legend(fontsize=7)
+    ax[2].set_aspect("equal")
+    ax[2].set_xlim(0.45, 1.15)
+    ax[2].set_ylim(0, 0.35)
+    ax[2].set_title(f"t = {m['t_end']:.2f} s", fontsize=9)
+    ax[2].legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(os.path.join(out, "granular_sorting.png"), dpi=110)
     print("wrote", os.path.join(out, "granular_sorting.png"))

@@ -19,11 +19,13 @@ ContactCoefficients unit_coefficients(const DemConfig& cfg) {
   u.k_t = k1 / (2.0 * (1.0 + cfg.psi));
   // eq. 13: c_eta = c_xi / sqrt(2 (1 + psi))
   u.c_t = u.c_n / std::sqrt(2.0 * (1.0 + cfg.psi));
+  // eq. 15's mu, not scaled
+  u.mu = cfg.mu;
   return u;
 }
 
 ContactCoefficients scaled(const ContactCoefficients& unit, double m_ij) {
-  return {m_ij * unit.k_n, m_ij * unit.c_n, m_ij * unit.k_t, m_ij * unit.c_t};
+  return {m_ij * unit.k_n, m_ij * unit.c_n, m_ij * unit.k_t, m_ij * unit.c_t, unit.mu};
 }
 
 ContactCoefficients coefficients(const DemConfig& cfg, double m_ij) {
@@ -48,8 +50,8 @@ ContactForce contact_force(const DemConfig& cfg, const ContactCoefficients& k,
   // eq. 8: F_eta = k_eta (U_eta dt_DEM) + c_eta U_eta; accumulated: the spring holds sum U_eta dt
   double s = (cfg.tangential == TangentialModel::Accumulated ? spring : 0.0) + U_t * dt;
   double F_t = k.k_t * s + k.c_t * U_t;
-  // eq. 15: |F_eta| <= mu |F_xi|; the accumulated spring slips to the cap
-  const double cap = cfg.mu * std::abs(F_n);
+  // eq. 15: |F_eta| <= mu |F_xi| (mu of the pair); the accumulated spring slips to the cap
+  const double cap = k.mu * std::abs(F_n);
   if (std::abs(F_t) > cap) {
     F_t = std::copysign(cap, F_t);
     s = F_t / k.k_t;

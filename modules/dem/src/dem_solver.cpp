@@ -118,6 +118,12 @@ const DemSolver::Statics& DemSolver::statics_of(std::int64_t id) const {
   return *it;
 }
 
+double DemSolver::friction_of(std::int64_t id) const {
+  const auto n = static_cast<std::size_t>(id);
+  if (id >= 0 && n < statics_.size() && statics_[n].id == id) return statics_[n].mu;
+  return statics_of(id).mu;
+}
+
 geometry::ShapePtr DemSolver::shape_of(std::int64_t id) const {
   return shapes_[static_cast<std::size_t>(statics_of(id).shape)].shape;
 }
@@ -149,7 +155,10 @@ void DemSolver::add_solids(const std::vector<SolidSpec>& solids) {
     s.shape = index;
     s.mass = spec.density * mp.area;
     s.inertia = spec.density * mp.polar_moment;
-    statics_.push_back({s.id, index, s.mass, s.inertia});
+    // a solid without its own friction has the case's dem/mu
+    own_friction_ = own_friction_ || spec.friction >= 0.0;
+    statics_.push_back(
+        {s.id, index, s.mass, s.inertia, spec.friction >= 0.0 ? spec.friction : cfg_.mu});
     max_radius_ = std::max(max_radius_, shapes_[static_cast<std::size_t>(index)].radius);
     if (owner_of(s.x) == comm_.rank()) {
       owned_.push_back(s);
@@ -328,7 +337,9 @@ void DemSolver::collision_forces(double dt_t, Stage& out, std::vector<Springs>* 
     ContactKinematics kin;
     // a tank wall or an obstacle (fixed, infinite mass) in contact with s
     auto against_fixed = [&](std::int64_t key) {
-      const auto coef = law.coefficients(s.mass, kFixedMass);
+      auto coef = law.coefficients(s.mass, kFixedMass);
+      // eq. 15's mu of the pair: the solid's own against the wall's or obstacle's dem/mu
+      if (own_friction_) coef.mu = pair_friction(friction_of(s.id), cfg_.mu);
       const auto cf = law.force(coef, kin, motion_of(s), fixed,
                                 accumulated ? spring_of(springs_[i], key) : 0.0, dt_t);
       add(kin, kin.arm_a, cf.force, cf.torque, key, cf.spring, -1, true);
@@ -347,7 +358,8 @@ void DemSolver::collision_forces(double dt_t, Stage& out, std::vector<Springs>* 
       const SolidState& a = i_is_a ? s : p;
       const SolidState& b = i_is_a ? p : s;
       if (!solid_pair(a, b, kin)) continue;
-      const auto coef = law.coefficients(a.mass, b.mass);
+      auto coef = law.coefficients(a.mass, b.mass);
+      if (own_friction_) coef.mu = pair_friction(friction_of(a.id), friction_of(b.id));
       const auto cf = law.force(coef, kin, motion_of(a), motion_of(b),
                                 accumulated ? spring_of(springs_[i], p.id) : 0.0, dt_t);
       add(kin, i_is_a ? kin.arm_a : kin.arm_b, i_is_a ? cf.force : -cf.force,

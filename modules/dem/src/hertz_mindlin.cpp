@@ -49,6 +49,7 @@ class HertzMindlin final : public ContactLaw {
     k.c_n = a_ * std::sqrt(m_star * k.k_n);  // c_hz = a(e) sqrt(m* k_hz)
     k.k_t = kappa_ * 1.5 * k.k_n;            // k_t = kappa dF_n/d(delta) / sqrt(delta)
     k.c_t = std::sqrt(kappa_) * k.c_n;       // c_t = sqrt(kappa) c_hz
+    k.mu = mu_;
     return k;
   }
 
@@ -65,8 +66,8 @@ class HertzMindlin final : public ContactLaw {
     const double kt = k.k_t * sd, ct = k.c_t * qd;
     double s = (accumulated_ ? spring : 0.0) + U_t * dt;
     double F_t = kt * s + ct * U_t;
-    // eq. 15: |F_t| <= mu |F_n|; the accumulated spring slips to the cap
-    const double cap = mu_ * std::abs(F_n);
+    // eq. 15: |F_t| <= mu |F_n| (mu of the pair); the accumulated spring slips to the cap
+    const double cap = k.mu * std::abs(F_n);
     if (std::abs(F_t) > cap) {
       F_t = std::copysign(cap, F_t);
       s = F_t / kt;

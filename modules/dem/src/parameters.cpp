@@ -17,6 +17,10 @@ void declare_motion(core::ParamSchema& v) {
   v.reals("velocity", {0.0, 0.0}, "initial velocity (u, w) of the centre of mass [m/s]").size(2, 2);
   v.real("omega", 0.0, "initial angular velocity, counter-clockwise [rad/s]");
   v.real("density", 0.0, "density [kg/m^3]").positive().is_required();
+  v.real("friction", -1.0,
+         "friction coefficient mu of these solids (eq. 15); a pair takes the smaller of its two, "
+         "a tank wall or an obstacle has dem/mu (doc/dem.md); -1: dem/mu")
+      .at_least(-1.0);
 }
 
 SolidSpec placed(const core::Params& s, const geometry::PlacedShape& p) {
@@ -28,6 +32,12 @@ SolidSpec placed(const core::Params& s, const geometry::PlacedShape& p) {
   const auto v = s.reals("velocity");
   spec.state.v = {v[0], v[1]};
   spec.state.omega = s.real("omega");
+  spec.friction = s.real("friction");
+  if (spec.friction < 0.0 && spec.friction != -1.0) {
+    std::ostringstream m;
+    m << s.full_path("friction") << " = " << spec.friction << "; allowed: >= 0, or -1 (dem/mu)";
+    throw core::InputError(m.str());
+  }
   const auto mp = spec.shape->mass_properties();
   spec.state.mass = spec.density * mp.area;
   spec.state.inertia = spec.density * mp.polar_moment;

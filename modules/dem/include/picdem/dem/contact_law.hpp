@@ -17,10 +17,20 @@ using core::Vec2;
 /// The mass given for the fixed side of a pair (a tank wall or an obstacle).
 constexpr double kFixedMass = std::numeric_limits<double>::infinity();
 
-/// The four coefficients of one pair, as its law defines them (for the paper's law eqs. 10-13).
+/// The four coefficients of one pair, as its law defines them (for the paper's law eqs. 10-13),
+/// and the pair's friction coefficient of eq. 15: dem/mu from the law, replaced by the solver with
+/// pair_friction() of the two bodies when the case gives solids their own `friction`.
 struct ContactCoefficients {
   double k_n = 0.0, c_n = 0.0, k_t = 0.0, c_t = 0.0;
+  double mu = 0.0;
 };
+
+/// Friction coefficient of a pair whose bodies have the coefficients mu_a and mu_b (a tank wall or
+/// an obstacle has dem/mu): the smaller, as Yade's default for two frictional materials (the
+/// smaller friction angle; doc/dem.md, "Friction by population").
+inline double pair_friction(double mu_a, double mu_b) {
+  return mu_a < mu_b ? mu_a : mu_b;
+}
 
 /// Rigid-body motion of one side of a contact.
 struct BodyMotion {
@@ -75,10 +85,11 @@ using ContactLawPtr = std::shared_ptr<const ContactLaw>;
 
 // ---- the paper's linear spring-dashpot (contact_law.cpp) --------------------------------------
 
-/// Coefficients of one pair (eqs. 10-13) for m_ij = (m_i + m_j) / 2 (m_ij = m_i for a wall).
+/// Coefficients of one pair (eqs. 10-13) for m_ij = (m_i + m_j) / 2 (m_ij = m_i for a wall), with
+/// mu = cfg.mu.
 ContactCoefficients coefficients(const DemConfig& cfg, double m_ij);
-/// The coefficients per unit m_ij (all four are proportional to m_ij) and their scaling:
-/// coefficients(cfg, m) == scaled(unit_coefficients(cfg), m), bit for bit.
+/// The coefficients per unit m_ij (all four are proportional to m_ij; mu is kept) and their
+/// scaling: coefficients(cfg, m) == scaled(unit_coefficients(cfg), m), bit for bit.
 ContactCoefficients unit_coefficients(const DemConfig& cfg);
 ContactCoefficients scaled(const ContactCoefficients& unit, double m_ij);
 

@@ -150,10 +150,14 @@ class DemSolver {
     std::int64_t id = 0;
     int shape = 0;
     double mass = 0.0, inertia = 0.0;
+    double mu = 0.0;  ///< friction coefficient (SolidSpec::friction, or dem/mu)
   };
   std::vector<Statics> statics_;  // every solid, sorted by id
   const Statics& statics_of(std::int64_t id) const;
-  ContactLawPtr law_;  // cfg_.contact_law, or the paper's law built from cfg_
+  /// Friction coefficient of solid `id` (ids are usually 0..N-1: statics_[id] without a search).
+  double friction_of(std::int64_t id) const;
+  bool own_friction_ = false;  // some solid sets its own friction: pairs take pair_friction()
+  ContactLawPtr law_;          // cfg_.contact_law, or the paper's law built from cfg_
   double max_radius_ = 0.0, skin_ = 0.0, dt_dem_ = 0.0;
   int last_subcycles_ = 0;
   long long rebuilds_ = 0;

@@ -42,12 +42,15 @@ struct DemConfig {
   double gap() const { return gap_cells * h; }
 };
 
-/// One solid of a case: its initial state (id, pose, velocities), shape and density. Mass and
-/// inertia in `state` are density x the shape's area / polar moment.
+/// One solid of a case: its initial state (id, pose, velocities), shape, density and friction.
+/// Mass and inertia in `state` are density x the shape's area / polar moment.
 struct SolidSpec {
   core::SolidState state;
   geometry::ShapePtr shape;
   double density = 0.0;
+  /// Friction coefficient of this solid (eq. 15; a pair takes pair_friction() of its two);
+  /// negative: the case's dem/mu.
+  double friction = -1.0;
 };
 
 /// Declares dem/* and the `solids` family: one variant per registered shape type
