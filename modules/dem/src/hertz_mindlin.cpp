@@ -17,8 +17,10 @@ constexpr double kPi = 3.141592653589793;
 
 class HertzMindlin final : public ContactLaw {
  public:
-  HertzMindlin(const DemConfig& cfg, double restitution)
-      : mu_(cfg.mu),
+  /// m_s > 0: the stiffness mass of a case (for_masses), 0: each pair's own m_ij.
+  HertzMindlin(const DemConfig& cfg, double restitution, double m_s = 0.0)
+      : m_s_(m_s),
+        mu_(cfg.mu),
         mu_r_(cfg.mu_r),
         gamma_(cfg.gamma),
         g_(cfg.g_stiffness),
@@ -45,10 +47,12 @@ class HertzMindlin final : public ContactLaw {
     const double m_ij = fixed ? m_a : 0.5 * (m_a + m_b);
     const double m_star = fixed ? m_a : m_a * m_b / (m_a + m_b);
     ContactCoefficients k;
-    k.k_n = m_ij * k1_;                      // k_hz
-    k.c_n = a_ * std::sqrt(m_star * k.k_n);  // c_hz = a(e) sqrt(m* k_hz)
-    k.k_t = kappa_ * 1.5 * k.k_n;            // k_t = kappa dF_n/d(delta) / sqrt(delta)
-    k.c_t = std::sqrt(kappa_) * k.c_n;       // c_t = sqrt(kappa) c_hz
+    // k_hz = m |g| / (theta dx)^{3/2}: m = m_ij of the pair, or the case's largest mass m_s for
+    // every pair (doc/dem.md, "Unequal masses"; equal masses: m_s = m_ij, the same bits)
+    k.k_n = (m_s_ > 0.0 ? m_s_ : m_ij) * k1_;  // k_hz
+    k.c_n = a_ * std::sqrt(m_star * k.k_n);    // c_hz = a(e) sqrt(m* k_hz)
+    k.k_t = kappa_ * 1.5 * k.k_n;              // k_t = kappa dF_n/d(delta) / sqrt(delta)
+    k.c_t = std::sqrt(kappa_) * k.c_n;         // c_t = sqrt(kappa) c_hz
     k.mu = mu_;
     return k;
   }
@@ -79,21 +83,27 @@ class HertzMindlin final : public ContactLaw {
     return out;
   }
 
-  ContactLawPtr for_masses(double, double) const override {
-    return std::make_shared<HertzMindlin>(*this);
+  ContactLawPtr for_masses(double, double m_max) const override {
+    auto law = std::make_shared<HertzMindlin>(*this);
+    law->m_s_ = m_max;
+    return law;
   }
 
   double time_step(double m_min, double m_max) const override {
-    // m* / m_ij of the most unequal pair, 2 r / (1 + r)^2 with r = m_max / m_min (1/2 for equal
-    // masses; a wall's 1 is larger)
+    // q = m* / m of the pair that needs the smallest step, m its stiffness mass. Pair's m_ij:
+    // the most unequal pair, 2 r / (1 + r)^2 with r = m_max / m_min (1/2 for equal masses; a
+    // wall's 1 is larger). Case-wide m_s = m_max: the two lightest solids, m* = m_min / 2, so
+    // q = m_min / (2 m_max) (1/2 for equal masses, as the pair's rule)
     const double r = m_min > 0.0 ? m_max / m_min : 1.0;
-    const double q = 2.0 * r / ((1.0 + r) * (1.0 + r));
+    const double q =
+        m_s_ > 0.0 && m_min > 0.0 ? 0.5 * (m_min / m_max) : 2.0 * r / ((1.0 + r) * (1.0 + r));
     // T = 2 pi sqrt(m* / S), S = dF_n/d(delta) = 1.5 k_hz delta^{1/2} at delta_dt; dt = T / gamma
-    const double S_per_m_ij = 1.5 * k1_ * std::sqrt(delta_dt_);
-    return 2.0 * kPi / gamma_ * std::sqrt(q / S_per_m_ij);
+    const double S_per_m = 1.5 * k1_ * std::sqrt(delta_dt_);
+    return 2.0 * kPi / gamma_ * std::sqrt(q / S_per_m);
   }
 
  private:
+  double m_s_;  // stiffness mass; 0: the pair's m_ij
   double mu_, mu_r_, gamma_, g_;
   bool accumulated_;
   double delta_ref_ = 0.0, k1_ = 0.0, a_ = 0.0, kappa_ = 0.0, delta_dt_ = 0.0;

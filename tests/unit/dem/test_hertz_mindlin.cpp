@@ -1,6 +1,8 @@
 // The Hertz-Mindlin contact law (doc/dem.md) against its analytic results, computed here from the
 // definitions, not from the code's coefficients:
-//   k_hz = m_ij |g| / (theta h)^{3/2}, m_ij = (m_1 + m_2) / 2, m* = m_1 m_2 / (m_1 + m_2);
+//   k_hz = m_ij |g| / (theta h)^{3/2}, m_ij = (m_1 + m_2) / 2, m* = m_1 m_2 / (m_1 + m_2), for the
+//   law alone; in a case (the solver's law, ContactLaw::for_masses) m_ij is the case's largest
+//   mass m_max for every pair (doc/dem.md, "Unequal masses"), the same for equal masses;
 //   restitution: the damping c = a(e) sqrt(m* k_hz) delta^{1/4} gives exactly e for any impact
 //   speed, a(e) = sqrt(5) (-ln e) / sqrt(pi^2 + ln^2 e) (Antypov & Elliott 2011);
 //   duration of an elastic impact at relative speed v: t_c = 2 I delta_max / v with
@@ -8,9 +10,11 @@
 //   = (2/5) Gamma(2/5) Gamma(1/2) / Gamma(9/10) = 1.4716...
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <tuple>
+#include <utility>
 
 #include "dem_fixtures.hpp"
 #include "picdem/core/error.hpp"
@@ -178,7 +182,8 @@ TEST_P(HertzDuration, ElasticImpactLastsTheHertzTime) {
   const Collision c = head_on(hertz_config(1.0), rho2, v0);
   const double m1 = rho * pi * r * r, m2 = rho2 * pi * r * r;
   const double m_star = m1 * m2 / (m1 + m2), v = 2.0 * v0;
-  const double delta_max = std::pow(5.0 * m_star * v * v / (4.0 * k_hz(0.5 * (m1 + m2))), 0.4);
+  // the solver's k_hz: the case's largest mass (doc/dem.md, "Unequal masses")
+  const double delta_max = std::pow(5.0 * m_star * v * v / (4.0 * k_hz(std::max(m1, m2))), 0.4);
   const double I = 0.4 * std::tgamma(0.4) * std::sqrt(pi) / std::tgamma(0.9);
   const double t_c = 2.0 * I * delta_max / v;
   std::printf("m2/m1 = %g, v0 = %g: t_c = %.6e s, measured %.6e s (%+.2e), e = %.6f\n", rho2 / rho,
@@ -229,4 +234,63 @@ TEST(HertzMindlin, RestitutionAgainstAWall) {
   const double measured = s.owned()[0].v.z / v0;
   std::printf("wall: e = %g, measured %.6f (%+.2e relative)\n", e, measured, measured / e - 1.0);
   EXPECT_NEAR(measured, e, 0.005 * e);
+}
+
+// The case-wide stiffness (doc/dem.md, "Unequal masses"): the law of a case whose masses lie in
+// [m1, m2] gives every pair k_hz of m2, damping a(e) sqrt(m* k_hz) of the pair's own m*, and the
+// step of the two lightest solids (m* = m1 / 2); equal masses give the pair's rule bit for bit.
+TEST(HertzMindlin, CaseWideStiffnessForUnequalMasses) {
+  DemConfig c;
+  c.h = h;
+  const double e = 0.6, m1 = 0.2, m2 = 1.4, a = hertz_damping_factor(e);
+  const auto law = hertz_mindlin(c, e)->for_masses(m1, m2);
+  for (const auto& [ma, mb] : {std::pair{m1, m2}, std::pair{m1, m1}, std::pair{m2, m2},
+                               std::pair{m1, kFixedMass}, std::pair{m2, kFixedMass}}) {
+    const auto k = law->coefficients(ma, mb);
+    const double m_star = mb == kFixedMass ? ma : ma * mb / (ma + mb);
+    EXPECT_NEAR(k.k_n, k_hz(m2), 1e-12 * k_hz(m2)) << ma << " " << mb;
+    EXPECT_NEAR(k.c_n, a * std::sqrt(m_star * k_hz(m2)), 1e-12 * k.c_n) << ma << " " << mb;
+  }
+  const double S1 = 1.5 * k_hz(1.0) * std::sqrt(2 * h);
+  const double dt = 2 * pi / 150 * std::sqrt(0.5 * m1 / m2 / S1);
+  EXPECT_NEAR(law->time_step(m1, m2), dt, 1e-12 * dt);
+  // equal masses: the pair's rule, the same bits
+  const auto raw = hertz_mindlin(c, e), same = raw->for_masses(m1, m1);
+  for (const double mb : {m1, kFixedMass}) {
+    EXPECT_EQ(same->coefficients(m1, mb).k_n, raw->coefficients(m1, mb).k_n);
+    EXPECT_EQ(same->coefficients(m1, mb).c_n, raw->coefficients(m1, mb).c_n);
+  }
+  EXPECT_EQ(same->time_step(m1, m1), raw->time_step(m1, m1));
+}
+
+// A heavy disk (10 times the mass, the same radius) resting on a light one on the floor. With one
+// stiffness for the case, k_hz delta^{3/2} = W gives the pair's overlap theta h (it carries the
+// heavy disk's weight m2 g) and the floor's theta h (1 + m1 / m2)^{2/3} (both weights). With each
+// pair's own m_ij the floor's contact would be 5 times deeper ((1 + m2 / m1)^{2/3} theta h): the
+// light disk is pushed into the floor. The static offset of the gravity kick is 1e-3 theta h for a
+// lone disk (DiskRestsOnTheFloorAtThetaH); asserted within 0.5 %.
+TEST(HertzMindlin, HeavyDiskOnALightOneRestsAtTheCaseWideOverlaps) {
+  DemConfig cfg;
+  cfg.h = h;
+  cfg.contact_law = hertz_mindlin(cfg, 0.5);
+  DemSolver s = solver(cfg, 0.2, 0.2);
+  const double z1 = r + cfg.gap(), z2 = z1 + 2 * r + cfg.gap();
+  s.add_solids({disk(0, r, rho, {0.1, z1}), disk(1, r, 10 * rho, {0.1, z2})});
+  int steps = 0;
+  for (; steps < 400000; ++steps) {
+    s.advance(s.dt_dem(), {});
+    const auto& b = s.owned();
+    if (steps > 1000 && std::abs(b[0].v.z) < 1e-9 && std::abs(b[1].v.z) < 1e-9) break;
+  }
+  const auto& b = s.owned();
+  const double theta_h = 0.01 * h;
+  const double floor = r + cfg.gap() - b[0].x.z;
+  const double pair = 2 * r + cfg.gap() - (b[1].x.z - b[0].x.z);
+  const double floor_expected = theta_h * std::pow(1.1, 2.0 / 3.0);
+  std::printf("after %d steps: floor overlap %.6e m (expected %.6e), pair %.6e m (expected %.6e)\n",
+              steps, floor, floor_expected, pair, theta_h);
+  EXPECT_NEAR(floor, floor_expected, 5e-3 * floor_expected);
+  EXPECT_NEAR(pair, theta_h, 5e-3 * theta_h);
+  EXPECT_EQ(b[0].x.x, 0.1);
+  EXPECT_EQ(b[1].x.x, 0.1);
 }
