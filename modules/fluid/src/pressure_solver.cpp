@@ -206,7 +206,10 @@ void run_cg(const detail::TpetraSystem& ts, const RCP<OP>& prec, const SolverSet
     return norm[0] / b_norm;
   };
   auto problem = rcp(new Belos::LinearProblem<double, MV, OP>(A, ts.x(), ts.b()));
-  problem->setLeftPrec(prec);
+  // Given as the right preconditioner: Belos' CG applies it to the residual either way (the same
+  // iterates, bit for bit), but LinearProblem::setProblem applies a left one to the initial
+  // residual for nothing, one V-cycle per solve (doc/performance.md).
+  problem->setRightPrec(prec);
   problem->setProblem();
   auto belos = rcp(new Teuchos::ParameterList(settings.belos));
   belos->set("Convergence Tolerance", settings.tolerance);
