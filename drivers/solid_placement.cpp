@@ -131,7 +131,9 @@ std::vector<Outline> solid_outlines(const core::Params& params) {
     try {
       placed = geometry::shape_type(s.string("type")).build(s, ctx);
     } catch (const core::InputError& e) {
-      throw core::InputError("solids/" + name + ": " + e.what());
+      // Name the solid once: a shape's own message may already start with its path.
+      const std::string what = e.what(), path = "solids/" + name;
+      throw core::InputError(what.rfind(path, 0) == 0 ? what : path + ": " + what);
     }
     for (std::size_t k = 0; k < placed.size(); ++k) {
       Outline o;
