@@ -99,6 +99,11 @@ void declare_parameters(core::ParamSchema& schema) {
       "no-slip without the splitting's O(dt) wall slip (doc/viscous.md, \"Pressure "
       "predictor\"; off by default: with it the viscous momentum balance's split case exceeds "
       "its 2%)");
+  schema.boolean("fluid/viscous_cut_mass", false,
+                 "implicit scheme: weigh each velocity node next to a solid or obstacle by the "
+                 "share of its P2G tent outside the bodies (its particles' mass), so that the "
+                 "viscous loads equal the momentum the particles lose (doc/viscous.md, "
+                 "\"Cut-node masses\")");
   schema.section("solver", "The pressure solve: Belos CG preconditioned by MueLu.");
   schema.real("solver/tolerance", 1e-8, "relative true residual ||b - A p|| / ||b|| to reach")
       .positive()
@@ -190,6 +195,7 @@ FluidConfig config_from(const core::Params& params) {
   c.implicit_viscosity = scheme != "explicit";
   c.viscous_beta = scheme == "crank_nicolson" ? 0.5 : 1.0;
   c.viscous_pressure_predictor = params.boolean("fluid/viscous_pressure_predictor");
+  c.viscous_cut_mass = params.boolean("fluid/viscous_cut_mass");
   c.h = params.real("grid/cell_size");
   c.open = open_boundaries_from(params, grid::spec_from(params));
   if (params.has("obstacles"))

@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <unordered_map>
 
 #include "picdem/core/error.hpp"
 #include "picdem/fluid/viscous.hpp"
@@ -184,6 +185,51 @@ ViscousStencil build_viscous_stencil(int component, const ViscousGrid& g,
     }
   }
   return s;
+}
+
+void set_cut_node_masses(ViscousStencil& s, const ViscousGrid& g,
+                         const std::vector<ViscousBody>& bodies) {
+  // Midpoint rule on a lattice of spacing h / kPerCell shared by the tents of neighbouring nodes
+  // (sample (X + 1/2) h / kPerCell from the component's first node), each sample tested once.
+  constexpr int kPerCell = 16;
+  const double step = 1.0 / kPerCell;
+  std::unordered_map<long long, bool> fluid_at;
+  const Vec2 first = s.position(0, g);
+  auto fluid_sample = [&](long long X, long long Z) {
+    const long long key = X * 4294967296LL + Z;
+    const auto it = fluid_at.find(key);
+    if (it != fluid_at.end()) return it->second;
+    const Vec2 x = first + Vec2{(X + 0.5) * step * g.h, (Z + 0.5) * step * g.h};
+    return fluid_at[key] = !any_inside(x, bodies);
+  };
+  s.mass.assign(s.node_of.size(), 1.0);
+  for (std::size_t r = 0; r < s.node_of.size(); ++r) {
+    const int n = s.node_of[r], i = n % s.ni, k = n / s.ni;
+    const Vec2 p = s.position(n, g);
+    // Only a node whose tent meets a body: one of the 8 nodes about it (its tent's corners and
+    // sides) is no unknown and inside a body (a body between them reaches in by under h^2 / 8R).
+    bool near = false;
+    for (int a = -1; a <= 1 && !near; ++a)
+      for (int c = -1; c <= 1 && !near; ++c) {
+        const int in = i + a, kn = k + c;
+        if ((a == 0 && c == 0) || in < 0 || kn < 0 || in >= s.ni || kn >= s.nk) continue;
+        near = s.unknown_of[static_cast<std::size_t>(in + s.ni * kn)] < 0 &&
+               any_inside(p + Vec2{a * g.h, c * g.h}, bodies);
+      }
+    if (!near) continue;
+    // m = integral of the tent (1 - |x| / h)(1 - |z| / h) over the fluid, / h^2
+    double m = 0.0;
+    for (int a = 0; a < 2 * kPerCell; ++a) {
+      const double x = (a + 0.5) * step - 1.0;
+      for (int c = 0; c < 2 * kPerCell; ++c) {
+        const double z = (c + 0.5) * step - 1.0;
+        if (fluid_sample(static_cast<long long>(i - 1) * kPerCell + a,
+                         static_cast<long long>(k - 1) * kPerCell + c))
+          m += (1.0 - std::abs(x)) * (1.0 - std::abs(z)) * step * step;
+      }
+    }
+    s.mass[r] = m;
+  }
 }
 
 std::vector<double> apply_viscous_operator(const ViscousStencil& s, const std::vector<double>& u) {

@@ -1,9 +1,10 @@
 // Implicit viscosity (viscous.hpp), the theta scheme for one velocity component
-// (beta = 1 backward Euler, 1/2 Crank-Nicolson; theta below is a leg's boundary fraction):
-//   (u_new - u_old) / dt = nu L (beta u_new + (1 - beta) u_old) + f,
+// (beta = 1 backward Euler, 1/2 Crank-Nicolson; theta below is a leg's boundary fraction; m_P the
+// node's mass in units of rho h^2, 1 unless set_cut_node_masses gave the stencil its masses):
+//   m_P (u_new - u_old) / dt = nu L (beta u_new + (1 - beta) u_old) + m_P f,
 // multiplied by h^2 / nu (alpha = h^2 / (nu dt), 0 for the steady problem):
-//   (alpha + beta diag_P) u_P - beta sum_{interior legs} u_N
-//     = alpha u_old,P + h^2 f_P / nu + beta sum_{boundary legs} u_B / theta
+//   (alpha m_P + beta diag_P) u_P - beta sum_{interior legs} u_N
+//     = m_P (alpha u_old,P + h^2 f_P / nu) + beta sum_{boundary legs} u_B / theta
 //       + (1 - beta) h^2 (L u_old)_P,
 // a symmetric positive definite matrix (an M-matrix, strictly diagonally dominant on rows with a
 // boundary leg or alpha > 0), solved with Belos CG preconditioned with MueLu (smoothed
@@ -35,7 +36,12 @@ using MV = Tpetra::MultiVector<>;
 using OP = Tpetra::Operator<>;
 using GO = Map::global_ordinal_type;
 
-/// The matrix alpha I + beta A of the stencil on a map of all unknowns (this rank alone).
+/// Unknown r's mass in units of rho h^2 (1 without cut-node masses).
+double mass_of(const ViscousStencil& s, std::size_t r) {
+  return s.mass.empty() ? 1.0 : s.mass[r];
+}
+
+/// The matrix alpha M + beta A of the stencil on a map of all unknowns (this rank alone).
 RCP<Matrix> assemble(const ViscousStencil& s, double alpha, double beta,
                      const RCP<const Map>& map) {
   auto A = rcp(new Matrix(map, 5));
@@ -43,7 +49,7 @@ RCP<Matrix> assemble(const ViscousStencil& s, double alpha, double beta,
     Teuchos::Array<GO> cols;
     Teuchos::Array<double> vals;
     cols.push_back(static_cast<GO>(r));
-    vals.push_back(alpha + beta * s.diag[r]);
+    vals.push_back(alpha * mass_of(s, r) + beta * s.diag[r]);
     for (int rn : s.neighbours[r])
       if (rn >= 0) {
         cols.push_back(static_cast<GO>(rn));
@@ -94,7 +100,7 @@ int solve_viscous_implicit(const ViscousStencil& s, double nu, double dt,
     for (std::size_t r = 0; r < n; ++r) {
       const auto node = static_cast<std::size_t>(s.node_of[r]);
       x(r, 0) = u[node];
-      b(r, 0) = alpha * u[node] + h2 * f[node] / nu;
+      b(r, 0) = mass_of(s, r) * (alpha * u[node] + h2 * f[node] / nu);
       if (beta < 1.0) b(r, 0) += (1.0 - beta) * h2 * lap_old[node];
     }
     for (const ViscousLeg& leg : s.legs)

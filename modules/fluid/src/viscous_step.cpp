@@ -99,8 +99,12 @@ ViscousStepResult apply_viscosity_implicit(grid::FaceField& u, grid::FaceField& 
   const std::vector<unsigned char> mask_u = fluid_node_mask(0, states, g);
   const std::vector<unsigned char> mask_w = fluid_node_mask(1, states, g);
   auto stencil_timer = std::make_unique<core::ScopedTimer>("fluid: implicit viscosity: stencil");
-  const ViscousStencil su = build_viscous_stencil(0, vg, bodies, walls, &mask_u);
-  const ViscousStencil sw = build_viscous_stencil(1, vg, bodies, walls, &mask_w);
+  ViscousStencil su = build_viscous_stencil(0, vg, bodies, walls, &mask_u);
+  ViscousStencil sw = build_viscous_stencil(1, vg, bodies, walls, &mask_w);
+  if (cfg.viscous_cut_mass) {  // each node's P2G mass next to the bodies (doc/viscous.md)
+    set_cut_node_masses(su, vg, bodies);
+    set_cut_node_masses(sw, vg, bodies);
+  }
   stencil_timer.reset();
   core::ScopedTimer solve_timer("fluid: implicit viscosity: solve");
   std::vector<double> ug = gather(u, d), wg = gather(w, d);

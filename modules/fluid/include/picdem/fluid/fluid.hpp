@@ -47,6 +47,9 @@ struct FluidConfig {
   /// fluid/viscous_pressure_predictor: the implicit viscous solve takes u + dt (g - grad p^n / rho)
   /// and removes it after (viscous_pressure_predictor, doc/viscous.md)
   bool viscous_pressure_predictor = false;
+  /// fluid/viscous_cut_mass: the implicit step weighs each node by its P2G tent's share outside
+  /// the bodies (set_cut_node_masses, doc/viscous.md "Cut-node masses")
+  bool viscous_cut_mass = false;
   double h = 0.0;       ///< cell size [m] (grid/cell_size)
   OpenBoundaries open;  ///< open/ keys: inflow and outflow sides (open_boundary.hpp)
   /// Per obstacle, in the case's order: obstacles/<name>/wall is free_slip (implicit viscosity,

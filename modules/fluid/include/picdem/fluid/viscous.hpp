@@ -95,6 +95,9 @@ struct ViscousStencil {
   std::vector<double> diag;     ///< per unknown: sum of the weights of its legs (1 interior)
   std::vector<std::array<int, 4>> neighbours;  ///< per unknown: unknown numbers, -1 none
   std::vector<ViscousLeg> legs;
+  /// Per unknown: the share of the node's P2G tent (bilinear, 2h x 2h) outside every body, the
+  /// node's fluid mass in units of rho h^2 (set_cut_node_masses); empty: 1 for every unknown.
+  std::vector<double> mass;
   /// Position of node id n.
   core::Vec2 position(int node, const ViscousGrid& g) const;
 };
@@ -112,16 +115,26 @@ ViscousStencil build_viscous_stencil(int component, const ViscousGrid& g,
                                      const ViscousWalls& walls,
                                      const std::vector<unsigned char>* fluid_nodes = nullptr);
 
+/// Sets s.mass: each unknown's share of its P2G tent (bilinear over [-h, h]^2 about the node)
+/// outside every body, by the midpoint rule on samples h / 16 apart (each sample's inside test
+/// shared by the tents that hold it), on the nodes whose tent meets a body (1 for the others; the
+/// tank walls are not counted). The particles fill the fluid only, so this is the
+/// node's P2G mass over rho h^2; with it the implicit step's momentum, sum rho h^2 mass (u_new -
+/// u_old), is what the particles gain, and it still equals minus the loads (doc/viscous.md,
+/// "Cut-node masses").
+void set_cut_node_masses(ViscousStencil& s, const ViscousGrid& g,
+                         const std::vector<ViscousBody>& bodies);
+
 /// (L u) per node (0 on nodes that are not unknowns): the explicit operator, u per node.
 std::vector<double> apply_viscous_operator(const ViscousStencil& s, const std::vector<double>& u);
 
-/// One implicit step for one component: (u_new - u_old)/dt = nu L (beta u_new + (1 - beta)
-/// u_old) + f, with f per node [m/s^2]; beta = 1 backward Euler, 1/2 Crank-Nicolson; dt =
-/// infinity gives the steady problem -nu L u = f. u holds u_old on entry (and the initial
-/// guess), u_new on return; nodes that are not unknowns are left unchanged. Solved with Belos CG
-/// preconditioned with MueLu (the matrix is symmetric positive definite) to the relative true
-/// residual `tolerance`; throws core::SolverError if it is not reached. Returns iterations. The
-/// loads of the step are viscous_loads of beta u_new + (1 - beta) u_old (they are linear in u).
+/// One implicit step for one component: m (u_new - u_old)/dt = nu L (beta u_new + (1 - beta)
+/// u_old) + m f, m = s.mass (1 when empty), with f per node [m/s^2]; beta = 1 backward Euler, 1/2
+/// Crank-Nicolson; dt = infinity gives the steady problem -nu L u = f. u holds u_old on entry (and
+/// the initial guess), u_new on return; nodes that are not unknowns are left unchanged. Solved with
+/// Belos CG preconditioned with MueLu (the matrix is symmetric positive definite) to the relative
+/// true residual `tolerance`; throws core::SolverError if it is not reached. Returns iterations.
+/// The loads of the step are viscous_loads of beta u_new + (1 - beta) u_old (they are linear in u).
 int solve_viscous_implicit(const ViscousStencil& s, double nu, double dt,
                            const std::vector<double>& f, std::vector<double>& u,
                            double tolerance = 1e-12, double beta = 1.0);
