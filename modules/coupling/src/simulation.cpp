@@ -195,7 +195,7 @@ void Simulation::step() {
   if (every > 0 && m.step > 0 && m.step % every == 0) rebalance_cuts(m);
   const Layout L = m.layout();
   fluid::FluidState* fluid = set.has_fluid ? &m.fluid : nullptr;
-  const auto motion = cfl_extra_motion(set, m.particles, m.dem.get(), m.comm);  // time step
+  const auto motion = cfl_extra_motion(L, set, m.particles, m.occupancy, m.dem.get());  // dt
   const double dt =
       fluid::choose_time_step(set.time, set.fluid, m.t, m.step, fluid, motion, m.last_dt, m.comm);
   m.set.fluid.open.t0 = m.t, m.set.fluid.open.t1 = m.t + dt;  // the inflows over this step

@@ -51,11 +51,21 @@ StepSettings step_settings_from(const core::Params& params) {
   return s;
 }
 
-fluid::StepMotion cfl_extra_motion(const StepSettings& set, const particles::ParticleSet& particles,
-                                   const dem::DemSolver* dem, const core::Comm& comm) {
-  if (set.cfl_from_particles) return {particles::max_speed(particles, comm), 0.0};
-  if (!dem) return {};  // dem: on every rank or on none
-  const dem::SurfaceMotion s = dem::surface_motion(*dem, comm);
+fluid::StepMotion cfl_extra_motion(const Layout& L, const StepSettings& set,
+                                   const particles::ParticleSet& particles,
+                                   particles::OccupancyPass& occupancy, const dem::DemSolver* dem) {
+  if (set.cfl_from_particles) return {particles::max_speed(particles, L.comm), 0.0};
+  if (!dem || !set.has_fluid) return {};  // dem: on every rank or on none; dry: dt_max
+  // the count of the step's cells (mark_cells), taken now: the same pass, the same result
+  occupancy.update(particles, L.d, L.halo, set.particles, true);
+  const core::Vec2 g = dem->config().gravity;
+  const double dt = set.time.dt_max, a = std::sqrt(g.x * g.x + g.z * g.z);
+  // a solid counts when its surface can come within (1 + cfl) h of water in the longest step
+  const auto near_water = [&](const core::SolidState& s, double radius, double speed) {
+    const double reach = radius + (speed + a * dt) * dt + (1.0 + set.time.cfl) * set.spec.h;
+    return particles::near_particles(occupancy.count, set.spec, s.x, reach);
+  };
+  const dem::SurfaceMotion s = dem::surface_motion(*dem, L.comm, near_water);
   return {s.speed, s.accel};
 }
 

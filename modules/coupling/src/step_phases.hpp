@@ -61,10 +61,13 @@ struct SolidsAtStart {
 };
 
 /// What besides the grid's face velocities bounds the step (time/cfl_speed), from its owner: the
-/// particles' fastest speed (particles::max_speed), or the solids' surface motion
-/// (dem::surface_motion: speed and gravity's change). Collective.
-fluid::StepMotion cfl_extra_motion(const StepSettings& set, const particles::ParticleSet& particles,
-                                   const dem::DemSolver* dem, const core::Comm& comm);
+/// particles' fastest speed (particles::max_speed), or the surface motion (dem::surface_motion:
+/// speed and gravity's change) of the solids that can reach a cell holding water within dt_max
+/// (particles::near_particles on the particles' count, which this computes as the step's cells
+/// would). Collective.
+fluid::StepMotion cfl_extra_motion(const Layout& L, const StepSettings& set,
+                                   const particles::ParticleSet& particles,
+                                   particles::OccupancyPass& occupancy, const dem::DemSolver* dem);
 
 /// geometry: solids at X^n -> cut cells and the fluid's apertures E.
 SolidsAtStart place_solids(const Layout& L, const StepSettings& set, const dem::DemSolver* dem,

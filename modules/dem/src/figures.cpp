@@ -6,10 +6,17 @@
 namespace picdem::dem {
 
 SurfaceMotion surface_motion(const DemSolver& dem, const core::Comm& comm) {
+  return surface_motion(dem, comm, [](const core::SolidState&, double, double) { return true; });
+}
+
+SurfaceMotion surface_motion(const DemSolver& dem, const core::Comm& comm,
+                             const SolidFilter& counts) {
   double vmax = 0.0;
-  for (const auto& s : dem.owned())
-    vmax = std::max(vmax, std::sqrt(s.v.x * s.v.x + s.v.z * s.v.z) +
-                              std::abs(s.omega) * dem.shape_of(s.id)->bounding_radius());
+  for (const auto& s : dem.owned()) {
+    const double r = dem.shape_of(s.id)->bounding_radius();
+    const double speed = std::sqrt(s.v.x * s.v.x + s.v.z * s.v.z) + std::abs(s.omega) * r;
+    if (counts(s, r, speed)) vmax = std::max(vmax, speed);
+  }
   const core::Vec2 g = dem.config().gravity;
   return {comm.max(vmax), std::sqrt(g.x * g.x + g.z * g.z)};
 }

@@ -26,4 +26,17 @@ LocalFigures local_figures(const ParticleSet& P, double mass) {
   return f;
 }
 
+bool near_particles(const grid::GridArray<int>& count, const grid::GridSpec& spec,
+                    core::Vec2 centre, double reach) {
+  int i0, k0, i1, k1;
+  spec.cell_of({centre.x - reach, centre.z - reach}, i0, k0);
+  spec.cell_of({centre.x + reach, centre.z + reach}, i1, k1);
+  i0 = std::max(i0, 0), k0 = std::max(k0, 0);  // cells of the grid only
+  i1 = std::min(i1, spec.nx - 1), k1 = std::min(k1, spec.nz - 1);
+  for (int k = k0; k <= k1; ++k)
+    for (int i = i0; i <= i1; ++i)
+      if (!count.in_storage(i, k) || count(i, k) > 0) return true;
+  return false;
+}
+
 }  // namespace picdem::particles

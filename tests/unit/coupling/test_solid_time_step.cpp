@@ -4,6 +4,7 @@
 // time/dt_growth a step.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -13,6 +14,9 @@
 #include "picdem/dem/figures.hpp"
 #include "picdem/fluid/time_step.hpp"
 #include "picdem/geometry/circle.hpp"
+#include "picdem/grid/field.hpp"
+#include "picdem/grid/grid.hpp"
+#include "picdem/particles/figures.hpp"
 
 using namespace picdem;
 using core::Vec2;
@@ -118,4 +122,46 @@ TEST(SolidTimeStep, GrowthFromTheLastStepIsBounded) {
   EXPECT_EQ(calm.dt(rule, {}, 1e-3), 1e-3);
   // a faster flow still shortens the step at once
   EXPECT_EQ(Grid(50.0).dt(rule, {}, 1e-3), 0.005 / 50.0);
+}
+
+// Only the solids whose surface can reach water within dt_max bound the step (the coupled step's
+// filter, step_phases.cpp cfl_extra_motion): a disk falling at 5 m/s 0.48 m above the water does
+// not, a disk at 0.5 m/s 3 cm above it does. particles::near_particles reads the particles' count
+// of this rank's owned and halo cells and answers true where the square leaves them.
+TEST(SolidTimeStep, OnlySolidsNearTheWaterBound) {
+  const core::Comm comm;
+  dem::DemConfig cfg;
+  cfg.h = 0.01;
+  grid::GridSpec spec;
+  spec.nx = 100, spec.nz = 100, spec.h = 0.01;  // the tank [0, 1] x [0, 1]
+  const grid::Decomposition d(spec, comm, 3, 0, 0);
+  dem::DemSolver dem(comm, cfg, grid::owned_regions(d), {{0.0, 0.0}, {1.0, 1.0}}, {});
+  std::vector<dem::SolidSpec> disks(2);
+  const Vec2 at[2] = {{0.3, 0.8}, {0.7, 0.33}}, v[2] = {{0.0, -5.0}, {0.0, -0.5}};
+  for (int n = 0; n < 2; ++n) {
+    disks[n].shape = std::make_shared<const geometry::Circle>(0.02);
+    disks[n].density = 2000.0;
+    disks[n].state.id = n, disks[n].state.x = at[n], disks[n].state.v = v[n];
+  }
+  dem.add_solids(disks);
+  grid::GridArray<int> count(d, grid::Stagger::Cell, 0);  // water up to z = 0.3: 4 per cell
+  const auto b = count.storage();
+  for (int k = std::max(b.k0, 0); k < std::min(b.k1, 30); ++k)
+    for (int i = b.i0; i < b.i1; ++i) count(i, k) = 4;
+  const double dt_max = 1e-3, cfl = 0.5, g = 9.81;
+  const auto near_water = [&](const core::SolidState& s, double radius, double speed) {
+    const double reach = radius + (speed + g * dt_max) * dt_max + (1.0 + cfl) * spec.h;
+    return particles::near_particles(count, spec, s.x, reach);
+  };
+  EXPECT_NEAR(dem::surface_motion(dem, comm).speed, 5.0, 1e-14);  // every solid
+  EXPECT_NEAR(dem::surface_motion(dem, comm, near_water).speed, 0.5, 1e-14);
+  // 0.48 m above the water at 5 m/s: the fall within dt_max (5 mm) is far from the water
+  const Vec2 high{0.3, 0.8}, low{0.7, 0.33};
+  int i, k;
+  spec.cell_of(high, i, k);
+  EXPECT_EQ(particles::near_particles(count, spec, high, 0.0405), !count.in_storage(i, k));
+  spec.cell_of(low, i, k);
+  EXPECT_EQ(particles::near_particles(count, spec, low, 0.0405), true);  // in its halo or past it
+  spec.cell_of({0.9, 0.9}, i, k);  // a dry corner: false where this rank sees it
+  EXPECT_EQ(particles::near_particles(count, spec, {0.9, 0.9}, 0.05), !count.in_storage(i, k));
 }

@@ -1,6 +1,7 @@
 #pragma once
 // Figures of the solids: the speed that bounds the coupled step (time/cfl_speed grid) and what the
 // step's diagnostics record of them.
+#include <functional>
 #include <vector>
 
 #include "picdem/core/comm.hpp"
@@ -17,6 +18,11 @@ struct SurfaceMotion {
 /// Collective: the SurfaceMotion of every rank's solids (speed 0 without solids). The fluid and
 /// contact loads of the coming step are not known before it; gravity's change is.
 SurfaceMotion surface_motion(const DemSolver& dem, const core::Comm& comm);
+/// The same over the owned solids `counts` takes (the solid, its bounding radius R and its
+/// surface speed |v| + |omega| R); collective.
+using SolidFilter = std::function<bool(const core::SolidState&, double radius, double speed)>;
+SurfaceMotion surface_motion(const DemSolver& dem, const core::Comm& comm,
+                             const SolidFilter& counts);
 
 /// This rank's owned solids (not collective).
 struct OwnedFigures {
