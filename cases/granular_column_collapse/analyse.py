@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Final runout and height of the granular column collapses against the aspect ratio a = H0/L0.
 
-Reads OUT_DIR/a<a>/solids.csv (t, id, x, z, ...) written by sweep.sh. Lengths from the left wall
+Reads OUT_DIR/a<a>/solids.csv (t, id, x, z, ...) written by sweep.sh (L0 from the run's
+case_resolved.yaml, so runs of other counts and widths are read too). Lengths from the left wall
 (x = 0) and from the tips of the floor's teeth (z = 4 mm); a grain's extent is taken as its
 centre +- d50/2 (2.5 mm; the sizes run from 4 to 6 mm):
   L0 = the column's width (the pour region's), H0 = highest grain top at t = 0;
@@ -46,6 +47,20 @@ def fit(xs, ys):
     return b, math.exp(c)
 
 
+def width_of(run_dir, default):
+    """L0: the x1 of the grains' pour region in the run's case_resolved.yaml (a run with another
+    count sets its own width), else the sweep's width for its a."""
+    path = os.path.join(run_dir, "case_resolved.yaml")
+    if not os.path.exists(path):
+        return default
+    with open(path) as f:
+        for line in f:
+            s = line.strip()
+            if s.startswith("region:"):
+                return float(s.split("[")[1].split("]")[0].split(",")[2])
+    return default
+
+
 def main():
     out = sys.argv[1]
     rows = []
@@ -54,6 +69,7 @@ def main():
         if not os.path.exists(path):
             print(f"a = {a_nom:g}: no {path}")
             continue
+        l0 = width_of(os.path.join(out, f"a{a_nom:g}"), l0)
         fr = frames(path)
         ts, t_end, t_prev = gc.end_times(fr, 0.1)
         h0 = height(fr[ts[0]])
