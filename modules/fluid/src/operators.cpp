@@ -104,6 +104,11 @@ void declare_parameters(core::ParamSchema& schema) {
                  "share of its P2G tent outside the bodies (its particles' mass), so that the "
                  "viscous loads equal the momentum the particles lose (doc/viscous.md, "
                  "\"Cut-node masses\")");
+  schema.boolean("fluid/viscous_rotation_rows", false,
+                 "implicit scheme without coupling/viscous_rigid_rows: each solid's angular "
+                 "velocity is an unknown of the viscous solve (its translation stays split, with "
+                 "the pressure predictor if set): light disks whose spin the split makes unstable "
+                 "(doc/viscous.md, \"Rotation rows\")");
   schema.section("solver", "The pressure solve: Belos CG preconditioned by MueLu.");
   schema.real("solver/tolerance", 1e-8, "relative true residual ||b - A p|| / ||b|| to reach")
       .positive()
@@ -196,6 +201,7 @@ FluidConfig config_from(const core::Params& params) {
   c.viscous_beta = scheme == "crank_nicolson" ? 0.5 : 1.0;
   c.viscous_pressure_predictor = params.boolean("fluid/viscous_pressure_predictor");
   c.viscous_cut_mass = params.boolean("fluid/viscous_cut_mass");
+  c.viscous_rotation_rows = params.boolean("fluid/viscous_rotation_rows");
   c.h = params.real("grid/cell_size");
   c.open = open_boundaries_from(params, grid::spec_from(params));
   if (params.has("obstacles"))

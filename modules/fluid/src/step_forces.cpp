@@ -36,6 +36,11 @@ ViscousExchange add_forces_implicit(const FluidConfig& cfg, std::vector<ViscousB
   // the result gives du back (doc/viscous.md, "Pressure predictor"); not with rigid rows, whose
   // solids would need the same prediction of the rest of their step.
   const bool predict = cfg.viscous_pressure_predictor && !rigid_rows;
+  if (cfg.viscous_rotation_rows && !rigid_rows)  // omega an unknown, translation split
+    for (std::size_t b = 0; b < solids.size(); ++b) {
+      bodies[b].mass = solids[b].mass, bodies[b].inertia = solids[b].inertia;
+      bodies[b].rotation_only = true;
+    }
   grid::FaceField du(f.u), dw(f.w);
   if (predict) {
     viscous_pressure_predictor(du, dw, f.p, f.cells, f.apertures, dt, cfg, surface, d, halo);

@@ -6,7 +6,8 @@
 // solved by superposition: u(s) = u_0 + sum_j (s_j - s_j^n) g_j, where u_0 is the solve with the
 // bodies at s^n and g_j the fluid's answer to a unit rigid velocity j of one body (walls and the
 // other bodies at rest, u_old = 0); F is affine in (u, s), so the bodies' equations become the
-// dense system (M / dt - K) (s - s^n) = F(u_0, s^n), K_ij = F_i(g_j, e_j).
+// dense system (M / dt - K) (s - s^n) = F(u_0, s^n), K_ij = F_i(g_j, e_j). A body with
+// rotation_only has omega alone as an unknown: its rows of V_x, V_z are ds = 0 (the split).
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -89,6 +90,10 @@ ViscousLoads solve_viscous_rigid_rows(const ViscousStencil& su, const ViscousSte
   for (std::size_t f = 0; f < free.size(); ++f)
     for (int j = 0; j < 3; ++j) {
       const std::size_t col = 3 * f + static_cast<std::size_t>(j);
+      if (bodies[free[f]].rotation_only && j != 2) {  // its translation stays split: ds = 0
+        gu[col] = zero_u, gw[col] = zero_w;
+        continue;
+      }
       const auto unit = unit_motion(bodies, free[f], j);
       ViscousStencil eu = su, ew = sw;
       set_leg_values(eu, unit);
@@ -116,6 +121,12 @@ ViscousLoads solve_viscous_rigid_rows(const ViscousStencil& su, const ViscousSte
     rhs[3 * g] = base.force[free[g]].x;
     rhs[3 * g + 1] = base.force[free[g]].z;
     rhs[3 * g + 2] = base.torque[free[g]];
+    if (body.rotation_only)  // ds_x = ds_z = 0
+      for (std::size_t r = 0; r < 2; ++r) {
+        const std::size_t row = 3 * g + r;
+        for (std::size_t c = 0; c < n; ++c) K[row * n + c] = c == row ? 1.0 : 0.0;
+        rhs[row] = 0.0;
+      }
   }
   const std::vector<double> ds = solve_dense(K, rhs, n);
   for (std::size_t col = 0; col < n; ++col) {

@@ -3,7 +3,8 @@
 // - the disk's equation M (s - s^n) / dt = F(u_new, s) holds and the fluid's momentum gain is
 //   minus the loads on the disk and the walls, both to the solver tolerance;
 // - a light disk (density 10 in water, dt = 0.05 s, nu = 1e-2) slows without reversing, where
-//   the split (the fluid solved with the disk at s^n, then the disk given that load) reverses.
+//   the split (the fluid solved with the disk at s^n, then the disk given that load) reverses;
+// - rotation_only: the translation kept, the spin solved with the fluid, the exchange exact.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -115,4 +116,33 @@ TEST(ViscousRigidRows, LightDiskSlowsWithoutReversing) {
   EXPECT_GT(rows.omega, 0.0);
   EXPECT_LT(rows.omega, before.omega);
   EXPECT_LT(v_split.x, 0.0);  // the split reverses the disk
+}
+
+TEST(ViscousRigidRows, RotationOnlyKeepsTheTranslationAndSolvesTheSpin) {
+  // rotation_only (fluid/viscous_rotation_rows): omega alone is an unknown; the translation keeps
+  // V^n (the split), the spin's equation I (omega - omega^n) / dt = T(u_new, s) holds, and the
+  // fluid's momentum gain is still minus the loads on the disk and the walls.
+  Box box(10.0, true);
+  box.bodies[0].rotation_only = true;
+  const ViscousBody before = box.bodies[0];
+  std::vector<double> u1 = box.u, w1 = box.w;
+  std::vector<ViscousBody> bodies = box.bodies;
+  int iterations = 0;
+  const auto loads =
+      fluid::solve_viscous_rigid_rows(box.su, box.sw, nu, rho, dt, u1, w1, bodies, iterations);
+  const ViscousBody& after = bodies[0];
+  const double spin_rate = after.inertia * (after.omega - before.omega) / dt;
+  const Vec2 gain = box.momentum_rate(u1, w1, rho, dt);
+  const double scale = std::abs(loads.force[0].x) + std::abs(loads.force[0].z);
+  std::printf("rotation only: omega %.4f -> %.4f rad/s, spin residual %.2e of %.3e N m/m\n",
+              before.omega, after.omega, spin_rate - loads.torque[0], loads.torque[0]);
+  EXPECT_EQ(after.velocity.x, before.velocity.x);
+  EXPECT_EQ(after.velocity.z, before.velocity.z);
+  EXPECT_GT(std::abs(loads.torque[0]), 1e-6);
+  EXPECT_NEAR(spin_rate, loads.torque[0], 1e-8 * std::abs(loads.torque[0]) + 1e-12);
+  // the light disk's spin slows without reversing (the split reverses it: the test above)
+  EXPECT_GT(after.omega, 0.0);
+  EXPECT_LT(after.omega, before.omega);
+  EXPECT_NEAR(gain.x + loads.force[0].x + loads.wall_force.x, 0.0, 1e-8 * scale);
+  EXPECT_NEAR(gain.z + loads.force[0].z + loads.wall_force.z, 0.0, 1e-8 * scale);
 }

@@ -50,6 +50,9 @@ struct FluidConfig {
   /// fluid/viscous_cut_mass: the implicit step weighs each node by its P2G tent's share outside
   /// the bodies (set_cut_node_masses, doc/viscous.md "Cut-node masses")
   bool viscous_cut_mass = false;
+  /// fluid/viscous_rotation_rows: without coupling/viscous_rigid_rows, each solid's omega is an
+  /// unknown of the implicit viscous step (its translation stays split; doc/viscous.md)
+  bool viscous_rotation_rows = false;
   double h = 0.0;       ///< cell size [m] (grid/cell_size)
   OpenBoundaries open;  ///< open/ keys: inflow and outflow sides (open_boundary.hpp)
   /// Per obstacle, in the case's order: obstacles/<name>/wall is free_slip (implicit viscosity,

@@ -35,6 +35,9 @@ struct ViscousBody {
   /// component across the leg's direction) are dropped, zero gradient; the component along the
   /// leg keeps the body's velocity. Exact on grid-aligned edges only (doc/viscous.md).
   bool free_slip = false;
+  /// With mass > 0: omega alone is an unknown of the implicit step, the translation keeps the
+  /// split's start-of-step velocity (fluid/viscous_rotation_rows, doc/viscous.md).
+  bool rotation_only = false;
   core::Vec2 velocity_at(const core::Vec2& x) const {
     return {velocity.x - omega * (x.z - centre.z), velocity.z + omega * (x.x - centre.x)};
   }
