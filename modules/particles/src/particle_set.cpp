@@ -24,12 +24,14 @@ void declare_parameters(core::ParamSchema& schema) {
       .at_most(1.0);
   schema
       .integer("particles/min_per_cell", 2,
-               "reseeding adds particles in interior fluid cells holding fewer (0: never)")
+               "reseeding adds particles in interior fluid cells holding fewer (0: reseeding off, "
+               "no particle added or removed)")
       .at_least(0)
       .at_most(64);
   schema
       .integer("particles/max_per_cell", 8,
-               "reseeding removes the particles with the largest ids above this many per cell")
+               "reseeding removes the particles with the largest ids above this many per cell "
+               "(not with min_per_cell 0)")
       .at_least(1)
       .at_most(256);
   schema.integer("particles/seed", 1, "seed of the counter-based random numbers").at_least(0);

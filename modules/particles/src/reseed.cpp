@@ -34,6 +34,7 @@ bool interior_fluid(const grid::GridArray<signed char>& state, const grid::GridS
 bool reseed_changes(const ParticleConfig& config, const grid::Decomposition& d,
                     const grid::GridArray<int>& count,
                     const grid::GridArray<signed char>& cell_state) {
+  if (config.min_per_cell == 0) return false;  // reseeding off: the particles are conserved
   const grid::GridSpec& s = d.spec();
   const core::IndexBox cells = d.owned_cells();
   for (int k = cells.k0; k < cells.k1; ++k)
@@ -49,6 +50,7 @@ void reseed(ParticleSet& p, const ParticleConfig& config, const grid::Decomposit
             const grid::FaceField& u, const grid::FaceField& w, long long step,
             const std::function<bool(core::Vec2)>& reject) {
   core::ScopedTimer timer("particles: reseed");
+  if (config.min_per_cell == 0) return;  // reseeding off: no particle added or removed
   const grid::GridSpec& s = d.spec();
   const core::IndexBox cells = d.owned_cells();
   if (step < 0) throw core::SolverError("reseed: step must be >= 0, got " + std::to_string(step));

@@ -151,6 +151,27 @@ TEST(Reseed, KeepsCountsInBoundsIndependentlyOfRanks) {
   EXPECT_GT(added, 30);
 }
 
+// min_per_cell 0 turns reseeding off, trimming included: the overfilled cells keep their
+// particles (issue 14: the cylinder dam breaks run without reseeding and trimming at
+// max_per_cell removed 0.55% of their particles by 0.6 s at h = 0.5 mm).
+TEST(Reseed, OffAddsAndRemovesNothing) {
+  const grid::GridSpec s = tank();
+  ParticleConfig c;
+  c.min_per_cell = 0;
+  c.max_per_cell = kMax;
+  core::Comm comm;
+  grid::Decomposition d(s, comm, required_halo(c));
+  const long long before = comm.sum(static_cast<long long>(prepare(d, c).size()));
+  const Result r = run(d, c, 17);
+  long long above = 0;
+  const core::IndexBox o = d.owned_cells();
+  for (int k = o.k0; k < o.k1; ++k)
+    for (int i = o.i0; i < o.i1; ++i) above += r.count(i, k) > kMax;
+  EXPECT_GT(comm.sum(above), 10);  // the overfilled cells kept their particles
+  EXPECT_EQ(comm.sum(static_cast<long long>(r.p.size())), before);
+  EXPECT_FALSE(comm.any(reseed_changes(c, d, r.count, r.state)));
+}
+
 TEST(Reseed, RejectsStaleCounts) {
   const grid::GridSpec s = tank();
   ParticleConfig c;

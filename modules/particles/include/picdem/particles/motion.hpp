@@ -19,7 +19,8 @@ double advect(ParticleSet& particles, const ParticleConfig& config, const grid::
               const grid::FaceField& w, const grid::GridSpec& spec, double dt,
               const std::function<void(double& x, double& z)>& push_out = {});
 
-/// Keeps the particles per cell within [min_per_cell, max_per_cell]:
+/// Keeps the particles per cell within [min_per_cell, max_per_cell]; min_per_cell 0 turns
+/// reseeding off, trimming included (nothing is added or removed: the particles are conserved):
 /// - in every owned cell above max_per_cell, the particles with the largest ids are removed;
 /// - in every interior fluid cell (Fluid, its four neighbours not Air) below min_per_cell,
 ///   particles are added at uniformly random positions (counter-based rng of seed, step, cell
@@ -35,9 +36,9 @@ void reseed(ParticleSet& particles, const ParticleConfig& config,
             const grid::FaceField& w, long long step,
             const std::function<bool(core::Vec2)>& reject = {});
 
-/// True when reseed would change this rank's particles: an owned cell's count is above
-/// max_per_cell, or an interior fluid cell's below min_per_cell (from the counts alone, without
-/// visiting the particles; `count` current as for reseed).
+/// True when reseed would change this rank's particles: with min_per_cell > 0, an owned cell's
+/// count is above max_per_cell, or an interior fluid cell's below min_per_cell (from the counts
+/// alone, without visiting the particles; `count` current as for reseed).
 bool reseed_changes(const ParticleConfig& config, const grid::Decomposition& decomposition,
                     const grid::GridArray<int>& count,
                     const grid::GridArray<signed char>& cell_state);
