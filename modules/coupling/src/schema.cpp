@@ -2,6 +2,7 @@
 
 #include "picdem/dem/parameters.hpp"
 #include "picdem/fluid/fluid.hpp"
+#include "picdem/fluid/time_step.hpp"
 #include "picdem/geometry/obstacles.hpp"
 #include "picdem/grid/grid.hpp"
 #include "picdem/io/checkpoint_files.hpp"
@@ -13,30 +14,10 @@ namespace picdem::coupling {
 
 namespace {
 
-// The case's name and the time step: the step's own keys (the time loop reads time/end).
-void declare_case_and_time(core::ParamSchema& s) {
+// The case's name (the time step's keys are fluid's: fluid/time_step.hpp).
+void declare_case(core::ParamSchema& s) {
   s.section("case", "What the case is.");
   s.string("case/name", "unnamed", {}, "short name, used in output file headers");
-
-  s.section("time", "Simulated time and the adaptive time step.");
-  s.real("time/end", 1.0,
-         "simulated time to reach [s]; the run ends with the first step at or past it (the last "
-         "step is not shortened, so continuing to a later end follows the same trajectory)")
-      .positive()
-      .is_required();
-  s.real("time/cfl", 0.5, "CFL number: dt <= cfl h / max|u| on the grid").positive().at_most(5.0);
-  s.string("time/cfl_speed", "particles", {"particles", "grid"},
-           "the speed of the CFL bound: the largest of the grid's face velocities, which move the "
-           "particles, and the solids' surface speeds with gravity's change over the step (grid), "
-           "or of the grid's face velocities and the particles' own speeds (particles; "
-           "doc/coupling.md)");
-  s.real("time/dt_max", 1e-3, "largest time step [s]").positive();
-  s.real("time/dt_growth", 1.2,
-         "time/cfl_speed grid: largest ratio of a time step to the last one: after a short step "
-         "(a fast flow, an impact) dt grows back gradually; a large value lifts the bound")
-      .at_least(1.0);
-  s.real("time/dt_min", 1e-8, "smallest time step [s]; a step below it stops the run as blown up")
-      .positive();
 }
 
 // The fluid-solid coupling, and the check that needs several modules' keys.
@@ -74,7 +55,8 @@ void declare_coupling(core::ParamSchema& s) {
 core::ParamSchema case_schema() {
   // In the order of the reference (doc/parameters.md): sections, then the families.
   core::ParamSchema s;
-  declare_case_and_time(s);
+  declare_case(s);
+  fluid::declare_time_parameters(s);
   io::declare_output_parameters(s);
   fluid::declare_free_surface_parameters(s);
   declare_coupling(s);

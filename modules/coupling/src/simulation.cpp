@@ -52,34 +52,16 @@ struct Simulation::Impl {
   std::vector<core::SolidLoads> obstacle_loads;  // J p + F_q of the last step, every obstacle
 
   Layout layout() const { return {*decomp, *halo, comm}; }
-  bool weighted() const { return params.string("grid/decomposition") == "weighted"; }
 };
 
 namespace {
 
-// Water is seeded where neither solids nor obstacles are. Cells are seeded by their centre;
-// particles that fall inside a body are then removed, so that cut cells whose centre is covered
-// still get particles in their fluid part. The seeding's jitter keeps the lattice's occupancy over
-// the particles whose lattice position is wet (particles::seed): a level surface on a cell face
-// is seeded flat.
+// The water, out of the solids and obstacles at t = 0.
 particles::ParticleSet seed_water(const Simulation::Impl& m) {
-  const particles::WaterRegions water(m.params);
-  const SolidScene scene0 = scene_of(m.dem.get(), m.obstacles);
-  const SolidLocator locator(scene0);
-  const auto wet = [&](Vec2 p) { return water.contains(p) && !locator.inside(p); };
-  auto ps = particles::seed(
-      *m.decomp, m.set.particles,
-      [&](Vec2 c) {
-        const double r = 0.5 * m.set.spec.h;
-        return water.contains(c) || water.contains(c + Vec2{r, r}) ||
-               water.contains(c + Vec2{-r, r}) || water.contains(c + Vec2{r, -r}) ||
-               water.contains(c + Vec2{-r, -r});
-      },
-      wet);
-  std::vector<char> keep(ps.size());
-  for (std::size_t n = 0; n < keep.size(); ++n) keep[n] = wet({ps.x[n], ps.z[n]});
-  ps.keep_if(keep);
-  return ps;
+  const dem::SolidScene scene0 = dem::scene_of(m.dem.get(), m.obstacles);
+  const dem::SolidLocator locator(scene0);
+  return particles::seed_water(*m.decomp, m.set.particles, particles::WaterRegions(m.params),
+                               [&](Vec2 p) { return locator.inside(p); });
 }
 
 // Collective: sets the cut lines and moves the state to the new owners (the fluid's saved fields
@@ -102,29 +84,15 @@ void adopt_cuts(Simulation::Impl& m, const grid::Cuts& cuts) {
 }
 
 // grid/decomposition = weighted: cut lines balancing the particles' work (particles::cell_work,
-// grid::balanced_cuts), taken
-// when they lighten the heaviest block by grid/rebalance_gain or more. A function of the particles
-// and the present cuts only, both of which a checkpoint keeps.
+// grid::worthwhile_cuts). A function of the particles and the present cuts only, both of which a
+// checkpoint keeps.
 void rebalance_cuts(Simulation::Impl& m) {
-  if (!m.weighted() || m.comm.size() == 1 || !m.set.has_fluid) return;
-  const auto work = particles::cell_work(*m.decomp, m.particles);
+  if (!m.set.balance.weighted || m.comm.size() == 1 || !m.set.has_fluid) return;
   const auto cuts =
-      grid::balanced_cuts(*m.decomp, work, static_cast<int>(m.params.integer("grid/ranks_x")),
-                          static_cast<int>(m.params.integer("grid/ranks_z")));
-  if (cuts.xs == m.decomp->x_cuts() && cuts.zs == m.decomp->z_cuts()) return;
-  const long long before = grid::heaviest_block(*m.decomp, work);
-  const double gain = m.params.real("grid/rebalance_gain");
-  if (static_cast<double>(cuts.heaviest) > (1.0 - gain) * static_cast<double>(before)) return;
-  adopt_cuts(m, cuts);
-  auto list = [](const std::vector<int>& v) {
-    std::string out;
-    for (int c : v) out += (out.empty() ? "" : " ") + std::to_string(c);
-    return out;
-  };
-  core::log(m.comm, "picdem: step " + std::to_string(m.step) + ": cut lines x {" + list(cuts.xs) +
-                        "}, z {" + list(cuts.zs) + "}, heaviest block " + std::to_string(before) +
-                        " -> " + std::to_string(cuts.heaviest) + " of " +
-                        std::to_string(cuts.total));
+      grid::worthwhile_cuts(*m.decomp, particles::cell_work(*m.decomp, m.particles), m.set.balance);
+  if (!cuts) return;
+  adopt_cuts(m, *cuts);
+  core::log(m.comm, "picdem: step " + std::to_string(m.step) + ": " + grid::describe(*cuts));
 }
 
 }  // namespace
@@ -136,9 +104,8 @@ Simulation::Simulation(core::Comm comm, core::Params params) : m_(std::make_uniq
   m.set = step_settings_from(params);
   const auto& spec = m.set.spec;
   const int halo = std::max(3, particles::required_halo(m.set.particles));
-  m.decomp = std::make_unique<grid::Decomposition>(
-      spec, comm, halo, static_cast<int>(params.integer("grid/ranks_x")),
-      static_cast<int>(params.integer("grid/ranks_z")));
+  m.decomp = std::make_unique<grid::Decomposition>(spec, comm, halo, m.set.balance.ranks_x,
+                                                   m.set.balance.ranks_z);
   m.halo = std::make_unique<grid::Halo>(*m.decomp);
   const auto& d = *m.decomp;
 
@@ -158,7 +125,7 @@ Simulation::Simulation(core::Comm comm, core::Params params) : m_(std::make_uniq
 
   if (m.set.has_fluid) {
     m.pressure = std::make_unique<fluid::PressureSolver>(d, params);
-    if (m.set.density_relaxation > 0.0)
+    if (m.set.surface.density_relaxation > 0.0)
       m.density_solver = std::make_unique<fluid::PressureSolver>(
           d, params, fluid::PressureSolver::Equation::DensityCorrection);
     m.fluid = fluid::FluidState(d);
@@ -191,8 +158,7 @@ const core::Params& Simulation::params() const {
 void Simulation::step() {
   Impl& m = *m_;
   const StepSettings& set = m.set;
-  const long long every = m.params.integer("grid/rebalance_interval");
-  if (every > 0 && m.step > 0 && m.step % every == 0) rebalance_cuts(m);
+  if (set.balance.due(m.step)) rebalance_cuts(m);
   const Layout L = m.layout();
   fluid::FluidState* fluid = set.has_fluid ? &m.fluid : nullptr;
   const auto motion = cfl_extra_motion(L, set, m.particles, m.occupancy, m.dem.get());  // dt
@@ -209,8 +175,9 @@ void Simulation::step() {
     if (correct_density(L, set, m.step, solids, m.fluid, m.density_solver.get(), m.particles))
       mark_cells(L, set, solids.cut, m.particles, m.occupancy, m.fluid);   // density: cells again
     particles_to_grid(L, set, solids, m.particles, m.occupancy, m.fluid);  // transfer
-    m.viscous = add_forces(L, set.fluid, set.viscous_rigid_rows, m.dem.get(), m.obstacles, dt,
-                           set.ghost_fluid ? &m.fluid.surface : nullptr, m.fluid);  // forces
+    m.viscous =
+        add_forces(L, set.fluid, set.viscous_rigid_rows, m.dem.get(), m.obstacles, dt,
+                   set.surface.ghost_fluid ? &m.fluid.surface : nullptr, m.fluid);  // forces
     auto collision = predict_contacts(m.dem.get(), dt);                             // contact
     // eq. 6: the viscous loads join the p-independent loads of V* (doc/viscous.md)
     if (m.dem && !m.viscous.solids.empty())
@@ -223,7 +190,7 @@ void Simulation::step() {
       m.obstacle_loads = fluid::obstacle_pressure_loads(solids.cut, m.fluid.cells, L.d, m.fluid.p,
                                                         set.quadrature, m.obstacles.size());
     if (m.dem) m.fluid_loads = advance_solids(m.pressure.get(), fluid, dt, m.viscous, *m.dem);
-    const SolidScene after = scene_of(m.dem.get(), m.obstacles);  // solids at X^{n+1}
+    const dem::SolidScene after = dem::scene_of(m.dem.get(), m.obstacles);  // solids at X^{n+1}
     grid_to_particles(L, set, solids, after, m.dem.get(), m.fluid, m.particles);  // transfer
     advected = advect_particles(L, set, m.step, solids.cut, after, dt, m.fluid, m.particles);
   } else if (m.dem) {
@@ -288,14 +255,10 @@ double Simulation::last_time_step() const {
 // rebalance, which the file does not hold); otherwise the caller rebalances after the restore
 bool Simulation::take_cuts_of(const std::vector<core::IndexBox>& boxes) {
   Impl& s = *m_;
-  if (!s.weighted() || s.comm.size() == 1 || !s.set.has_fluid) return false;
-  const auto cuts = grid::cuts_of_boxes(s.set.spec, boxes);
-  const long long rx = s.params.integer("grid/ranks_x"), rz = s.params.integer("grid/ranks_z");
-  const bool fit = boxes.size() == static_cast<std::size_t>(s.comm.size()) && !cuts.xs.empty() &&
-                   (rx == 0 || rx + 1 == static_cast<long long>(cuts.xs.size())) &&
-                   (rz == 0 || rz + 1 == static_cast<long long>(cuts.zs.size()));
-  if (fit) adopt_cuts(s, cuts);
-  return fit;
+  if (!s.set.balance.weighted || s.comm.size() == 1 || !s.set.has_fluid) return false;
+  const auto cuts = grid::fitting_cuts_of_boxes(s.set.spec, boxes, s.comm.size(), s.set.balance);
+  if (!cuts.xs.empty()) adopt_cuts(s, cuts);
+  return !cuts.xs.empty();
 }
 
 void Simulation::rebalance() {

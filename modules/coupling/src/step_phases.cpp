@@ -10,6 +10,7 @@
 #include "picdem/dem/figures.hpp"
 #include "picdem/dem/gap_damping.hpp"
 #include "picdem/fluid/bodies.hpp"
+#include "picdem/fluid/density_correction.hpp"
 #include "picdem/fluid/free_surface.hpp"
 #include "picdem/fluid/open_flow.hpp"
 #include "picdem/fluid/open_particles.hpp"
@@ -28,11 +29,8 @@ StepSettings step_settings_from(const core::Params& params) {
   StepSettings s;
   s.spec = grid::spec_from(params);
   s.particles = particles::config_from(params);
-  s.time = {s.spec.h, params.real("time/cfl"), params.real("time/dt_max"),
-            params.real("time/dt_min"), params.real("time/end")};
-  s.cfl_from_particles = params.string("time/cfl_speed") == "particles";
-  // time/dt_growth bounds the grid rule; particles is kept as it was before issue 13
-  s.time.growth = s.cfl_from_particles ? 0.0 : params.real("time/dt_growth");
+  s.time = fluid::time_step_limits_from(params);
+  s.balance = grid::balance_rule_from(params);
   s.has_fluid = !params.sublist_names("water").empty();
   s.beta = params.real("coupling/beta");
   s.viscous_rigid_rows = params.boolean("coupling/viscous_rigid_rows");
@@ -42,10 +40,7 @@ StepSettings step_settings_from(const core::Params& params) {
   if (!s.has_fluid) return s;
   s.fluid = fluid::config_from(params);
   s.quadrature = {params.boolean("coupling/hydrostatic_quadrature"), s.fluid.rho, s.fluid.g};
-  s.density_relaxation = params.real("free_surface/density_correction");
-  s.density_interval = params.integer("free_surface/density_correction_interval");
-  s.ghost_fluid = params.string("free_surface/method") == "ghost_fluid";
-  s.theta_min = params.real("free_surface/theta_min");
+  s.surface = fluid::free_surface_config_from(params);
   const double n = static_cast<double>(s.particles.per_cell_1d);
   s.particle_mass = s.fluid.rho * s.spec.h * s.spec.h / (n * n);
   return s;
@@ -54,7 +49,7 @@ StepSettings step_settings_from(const core::Params& params) {
 fluid::StepMotion cfl_extra_motion(const Layout& L, const StepSettings& set,
                                    const particles::ParticleSet& particles,
                                    particles::OccupancyPass& occupancy, const dem::DemSolver* dem) {
-  if (set.cfl_from_particles) return {particles::max_speed(particles, L.comm), 0.0};
+  if (set.time.cfl_from_particles) return {particles::max_speed(particles, L.comm), 0.0};
   if (!dem || !set.has_fluid) return {};  // dem: on every rank or on none; dry: dt_max
   // the count of the step's cells (mark_cells), taken now: the same pass, the same result
   occupancy.update(particles, L.d, L.halo, set.particles, true);
@@ -76,20 +71,13 @@ SolidsAtStart place_solids(const Layout& L, const StepSettings& set, const dem::
                            fluid::Apertures& apertures) {
   core::ScopedTimer timer("geometry");
   SolidsAtStart out;
-  out.scene = scene_of(dem, obstacles);
-  if (set.has_bodies) out.cut = cut_cells(out.scene, L.d, set.tiny_fraction, apertures);
+  out.scene = dem::scene_of(dem, obstacles);
+  if (set.has_bodies)
+    out.cut = fluid::cut_cells(out.scene.placements, out.scene.obstacles, set.tiny_fraction, L.d,
+                               apertures);
   if (set.fluid.open.any()) fluid::open_side_apertures(apertures, set.fluid.open, L.d);
   return out;
 }
-
-namespace {
-
-// True when `step` corrects the density (correct_density may move the particles).
-bool density_step(const StepSettings& set, long long step) {
-  return set.density_relaxation > 0.0 && step % set.density_interval == 0;
-}
-
-}  // namespace
 
 // The occupancy S, divided by the tent's open share next to bodies, the level set and the cell
 // states (fluid::mark_cells).
@@ -100,10 +88,10 @@ void mark_cells(const Layout& L, const StepSettings& set, const geometry::CutCel
   occ.update(particles, L.d, L.halo, set.particles, true);
   fluid.occupancy = occ.S;
   occ.current = false;  // the particles move before the next use
-  fluid::mark_cells(occ.count, set.has_bodies ? &cut : nullptr, L.d, L.halo, set.ghost_fluid,
-                    set.theta_min, fluid);
+  fluid::mark_cells(occ.count, set.has_bodies ? &cut : nullptr, L.d, L.halo,
+                    set.surface.ghost_fluid, set.surface.theta_min, fluid);
   // p = 0 on the outflow faces themselves (doc/open_boundaries.md)
-  if (set.ghost_fluid && set.fluid.open.any())
+  if (set.surface.ghost_fluid && set.fluid.open.any())
     fluid::open_surface_fractions(fluid.surface, set.fluid.open, L.d);
 }
 
@@ -143,7 +131,8 @@ fluid::ViscousExchange add_forces(const Layout& L, const fluid::FluidConfig& cfg
   if (!cfg.implicit_viscosity) {
     fluid::add_forces_explicit(cfg, dt, L.d, L.halo, f);
   } else {
-    const SolidScene all = scene_of_all(dem, obstacles);  // every rank solves the whole grid
+    // every rank solves the whole grid
+    const dem::SolidScene all = dem::scene_of_all(dem, obstacles);
     viscous = fluid::add_forces_implicit(
         cfg, fluid::viscous_bodies(all.placements, all.states, all.obstacles, rigid_rows),
         all.states, owned_solids(dem), rigid_rows, dt, surface, L.d, L.halo, L.comm, f);
@@ -176,13 +165,13 @@ fluid::SolveStats solve_pressure(const Layout& L, const StepSettings& set,
   }
   core::ScopedTimer timer("pressure");
   return solver.solve(f.cells, f.apertures, f.u, f.w, couplings, dt, set.fluid, f.p,
-                      set.ghost_fluid ? &f.surface : nullptr);
+                      set.surface.ghost_fluid ? &f.surface : nullptr);
 }
 
 void project(const Layout& L, const StepSettings& set, double dt, fluid::FluidState& f) {
   core::ScopedTimer timer("project");
   fluid::project(f.u, f.w, f.p, f.cells, f.apertures, dt, set.fluid,
-                 set.ghost_fluid ? &f.surface : nullptr);
+                 set.surface.ghost_fluid ? &f.surface : nullptr);
   fluid::enforce_walls(f.u, f.w, set.fluid, L.d);
 }
 
@@ -203,13 +192,13 @@ std::vector<core::SolidLoads> advance_solids(const fluid::PressureSolver* pressu
 // Faces closed by solids carry the solids' new rigid velocities, in u_old as well: the FLIP
 // increment u - u_old is the fluid's change only, not a body sweeping over a face.
 void grid_to_particles(const Layout& L, const StepSettings& set, const SolidsAtStart& solids,
-                       const SolidScene& after, const dem::DemSolver* dem, fluid::FluidState& f,
-                       particles::ParticleSet& particles) {
+                       const dem::SolidScene& after, const dem::DemSolver* dem,
+                       fluid::FluidState& f, particles::ParticleSet& particles) {
   core::ScopedTimer timer("transfer: grid to particles");
   // the faces closed by bodies at X^n carry their velocities at X^{n+1}; the fluid-face mask of
   // P2G is kept (cells and apertures unchanged since)
   const geometry::CutCells* cut = set.has_bodies ? &solids.cut : nullptr;
-  fluid::extend_around_fluid(motions_at(solids.scene, after), cut, L.d, L.halo, false, f);
+  fluid::extend_around_fluid(dem::motions_at(solids.scene, after), cut, L.d, L.halo, false, f);
   fluid::enforce_walls(f.u, f.w, set.fluid, L.d);
   if (set.has_bodies) fluid::rigid_faces_into_flip_base(set.spec, f);
   particles::from_grid(particles, set.particles, f.u_old, f.w_old, f.u, f.w, set.spec);
@@ -221,61 +210,40 @@ namespace {
 
 // A particle that ends inside a solid goes just outside it (none without bodies).
 std::function<void(double&, double&)> push_out_of_solids(const StepSettings& set,
-                                                         const SolidLocator& locator) {
+                                                         const dem::SolidLocator& locator) {
   if (!set.has_bodies) return {};
   const double h = set.spec.h;
-  return [&locator, h](double& x, double& z) { push_out(locator, h, x, z); };
+  return [&locator, h](double& x, double& z) { geometry::push_out(locator, h, x, z); };
 }
 
 }  // namespace
 
 // Particles crowded above the bulk density (S > 1), or thinned inside the water, are moved
-// (positions only: velocities untouched) by d = -grad q, with -L_E q = the excess area of
-// free_surface.hpp: the divergence of the displacement is that excess. Solids are fixed walls of
-// this Poisson equation; q = 0 on the free surface.
+// (positions only: velocities untouched) by the displacement of fluid::density_displacement.
 bool correct_density(const Layout& L, const StepSettings& set, long long step,
                      const SolidsAtStart& solids, const fluid::FluidState& f,
                      fluid::PressureSolver* solver, particles::ParticleSet& particles) {
-  if (set.density_relaxation <= 0.0 || step % set.density_interval != 0) return false;
+  if (!set.surface.corrects_density(step)) return false;
   core::ScopedTimer timer("density correction");
-  const auto& d = L.d;
-  constexpr double cap = 0.5;  // |S - 1| taken at most: half a cell's particles per step
-  grid::CellField source(d, Stagger::Cell, 0.0);
-  const bool mine = fluid::excess_area(f.occupancy, f.cells, set.has_bodies ? &solids.cut : nullptr,
-                                       set.density_relaxation, cap, d, source);
-  if (!L.comm.any(mine)) return false;
-  fluid::FluidConfig unit = set.fluid;
-  unit.rho = 1.0, unit.no_slip = false, unit.wall_no_slip = {};  // displacements free-slip
-  for (auto& side : unit.open.side)  // inflows bring no displacement; outflows keep q = 0
-    if (side.kind == fluid::OpenKind::Inflow)
-      side.shape = fluid::InflowShape::Uniform, side.velocity = 0.0;
-  const fluid::SurfaceFractions* surface = set.ghost_fluid ? &f.surface : nullptr;
-  FaceField dx(d, Stagger::FaceX, 0.0), dz(d, Stagger::FaceZ, 0.0);
-  grid::CellField q(d, Stagger::Cell, 0.0);
-  solver->solve(f.cells, f.apertures, dx, dz, {}, 1.0, unit, q, surface, &source);
-  fluid::project(dx, dz, q, f.cells, f.apertures, 1.0, unit, surface);
-  // A displacement of more than half a cell would skip the stencil: capped.
-  const double most = 0.5 * set.spec.h;
-  for (auto* g : {&dx, &dz}) {
-    const auto b = g->storage();
-    for (int k = b.k0; k < b.k1; ++k)
-      for (int i = b.i0; i < b.i1; ++i) (*g)(i, k) = std::clamp((*g)(i, k), -most, most);
-  }
-  fluid::extend_displacement(f.cells, f.apertures, unit, L.d, L.halo, dx, dz);
-  const SolidLocator locator(solids.scene);
+  FaceField dx(L.d, Stagger::FaceX, 0.0), dz(L.d, Stagger::FaceZ, 0.0);
+  if (!fluid::density_displacement(
+          f, set.has_bodies ? &solids.cut : nullptr, set.fluid, set.surface.density_relaxation,
+          set.surface.ghost_fluid ? &f.surface : nullptr, *solver, L.d, L.halo, L.comm, dx, dz))
+    return false;
+  const dem::SolidLocator locator(solids.scene);
   particles::advect(particles, set.particles, dx, dz, set.spec, 1.0,
                     push_out_of_solids(set, locator));
-  particles::migrate(particles, d);
+  particles::migrate(particles, L.d);
   return true;
 }
 
 // A cut cell holds fewer particles than a full one (its fluid part is smaller): reseeding it up
 // to particles/min_per_cell would add water every step. Cut cells are left out of reseeding.
 double advect_particles(const Layout& L, const StepSettings& set, long long step,
-                        const geometry::CutCells& cut, const SolidScene& after, double dt,
+                        const geometry::CutCells& cut, const dem::SolidScene& after, double dt,
                         const fluid::FluidState& f, particles::ParticleSet& particles) {
   core::ScopedTimer timer("advect");
-  const SolidLocator locator(after);
+  const dem::SolidLocator locator(after);
   const bool solids = set.has_bodies;
   const auto out_of_solids = push_out_of_solids(set, locator);
   // A blown-up advection is found on one rank: stop every rank with the message, never just one.
@@ -344,8 +312,9 @@ Diagnostics record_diagnostics(const Layout& L, const StepSettings& set, double 
   g.max_speed = comm.max(mine.max_speed);
   g.particles = comm.sum(static_cast<long long>(P.x.size()));
   if (fluid) {
-    // S of the particles where the step leaves them: kept for the next step's cells
-    occ.update(P, L.d, L.halo, set.particles, !density_step(set, step));  // P2G's sums: unmoved
+    // S of the particles where the step leaves them: kept for the next step's cells, with P2G's
+    // sums when the particles stay unmoved
+    occ.update(P, L.d, L.halo, set.particles, !set.surface.corrects_density(step));
     fluid->occupancy = occ.S;
     const geometry::CutCells* cut = set.has_bodies ? &solids->cut : nullptr;
     if (cut) fluid::open_share_correction(fluid->occupancy, *cut, L.d);

@@ -9,6 +9,7 @@
 #include "picdem/coupling/simulation.hpp"
 #include "picdem/coupling/solids_in_fluid.hpp"
 #include "picdem/dem/dem_solver.hpp"
+#include "picdem/dem/scene.hpp"
 #include "picdem/fluid/body_loads.hpp"
 #include "picdem/fluid/fluid.hpp"
 #include "picdem/fluid/fluid_state.hpp"
@@ -16,6 +17,7 @@
 #include "picdem/fluid/time_step.hpp"
 #include "picdem/fluid/viscous_bodies.hpp"
 #include "picdem/geometry/cut_cells.hpp"
+#include "picdem/grid/balance.hpp"
 #include "picdem/grid/field.hpp"
 #include "picdem/particles/occupancy_pass.hpp"
 #include "picdem/particles/particle_set.hpp"
@@ -34,20 +36,17 @@ struct Layout {
 struct StepSettings {
   grid::GridSpec spec;
   fluid::FluidConfig fluid;
+  fluid::FreeSurfaceConfig surface;  ///< free_surface/*
   particles::ParticleConfig particles;
-  fluid::TimeStepLimits time;      ///< time/* (fluid::choose_time_step)
-  bool cfl_from_particles = true;  ///< time/cfl_speed: particles (else grid and solids)
+  fluid::TimeStepLimits time;  ///< time/* (fluid::choose_time_step)
+  grid::BalanceRule balance;   ///< grid/decomposition and rebalancing (grid::worthwhile_cuts)
   bool has_fluid = false;
   bool has_solids = false;          ///< the run has a DEM (solids; or no water)
   bool has_bodies = false;          ///< solids or obstacles anywhere in the run (every rank alike)
-  bool ghost_fluid = true;          ///< sub-cell free surface (else p = 0 at air cell centres)
-  double theta_min = 0.01;          ///< free_surface/theta_min
   double tiny_fraction = 0;         ///< coupling/tiny_cell_fraction
   double beta = 1.0;                ///< coupling/beta, eq. 20
   bool viscous_rigid_rows = false;  ///< coupling/viscous_rigid_rows (doc/viscous.md)
   fluid::QuadratureOptions quadrature;
-  double density_relaxation = 0.0;                    ///< free_surface/density_correction
-  long long density_interval = 1;                     ///< free_surface/density_correction_interval
   double particle_mass = 0.0;                         ///< per unit depth
   std::vector<double> level_probes, solid_count_box;  ///< output/*
 };
@@ -56,7 +55,7 @@ StepSettings step_settings_from(const core::Params& params);
 /// The solids as the fluid sees them at X^n: poses and velocities (the scene) and the cut cells
 /// built from them (cut body b is scene.placements[b]). Built once per step, then only read.
 struct SolidsAtStart {
-  SolidScene scene;
+  dem::SolidScene scene;
   geometry::CutCells cut;
 };
 
@@ -126,13 +125,13 @@ std::vector<core::SolidLoads> advance_solids(const fluid::PressureSolver* pressu
 /// transfer: grid -> particles with the solids at X^{n+1} on covered faces, then gap damping
 /// (eq. 20) at the contacts of X^{n+1}.
 void grid_to_particles(const Layout& L, const StepSettings& set, const SolidsAtStart& solids,
-                       const SolidScene& after, const dem::DemSolver* dem, fluid::FluidState& fluid,
-                       particles::ParticleSet& particles);
+                       const dem::SolidScene& after, const dem::DemSolver* dem,
+                       fluid::FluidState& fluid, particles::ParticleSet& particles);
 
 /// advect: through the divergence-free field, out of the solids at X^{n+1}, migrate, reseed.
 /// Returns the largest distance the grid velocity moved a particle (collective: every rank's).
 double advect_particles(const Layout& L, const StepSettings& set, long long step,
-                        const geometry::CutCells& cut, const SolidScene& after, double dt,
+                        const geometry::CutCells& cut, const dem::SolidScene& after, double dt,
                         const fluid::FluidState& fluid, particles::ParticleSet& particles);
 
 /// Figures of the state after the step (t, step: its end); a non-finite particle or solid

@@ -104,6 +104,18 @@ Apertures body_apertures(const geometry::CutCells& cut, const grid::Decompositio
   return E;
 }
 
+geometry::CutCells cut_cells(const std::vector<geometry::SolidPlacement>& solids,
+                             const std::vector<geometry::Obstacle>& obstacles, double tiny_fraction,
+                             const grid::Decomposition& d, Apertures& apertures) {
+  const auto& spec = d.spec();
+  geometry::GridWindow window{spec.origin, spec.h, d.storage(grid::Stagger::Cell)};
+  geometry::CutCellOptions options;
+  options.tiny_fraction = tiny_fraction;
+  auto cut = geometry::build_cut_cells(window, solids, obstacles, options);
+  apertures = body_apertures(cut, d);
+  return cut;
+}
+
 void rigid_face_velocities(const std::vector<core::SolidState>& bodies,
                            const geometry::CutCells& cut, const Apertures& E,
                            const grid::Decomposition& d, grid::FaceField& u, grid::FaceField& w,

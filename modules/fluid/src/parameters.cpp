@@ -1,5 +1,5 @@
 // The free_surface/ keys (fluid.hpp): how the fluid's free surface is taken from the particles
-// (free_surface.hpp) and the density correction's settings.
+// (free_surface.hpp) and the density correction's settings, and their reading.
 #include "picdem/fluid/fluid.hpp"
 
 namespace picdem::fluid {
@@ -21,6 +21,15 @@ void declare_free_surface_parameters(core::ParamSchema& s) {
   s.integer("free_surface/density_correction_interval", 1,
             "steps between density corrections (each costs a second Poisson solve)")
       .at_least(1);
+}
+
+FreeSurfaceConfig free_surface_config_from(const core::Params& params) {
+  FreeSurfaceConfig c;
+  c.ghost_fluid = params.string("free_surface/method") == "ghost_fluid";
+  c.theta_min = params.real("free_surface/theta_min");
+  c.density_relaxation = params.real("free_surface/density_correction");
+  c.density_interval = params.integer("free_surface/density_correction_interval");
+  return c;
 }
 
 }  // namespace picdem::fluid

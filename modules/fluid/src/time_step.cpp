@@ -10,6 +10,38 @@
 
 namespace picdem::fluid {
 
+// The time step's keys (the time loop reads time/end as well).
+void declare_time_parameters(core::ParamSchema& s) {
+  s.section("time", "Simulated time and the adaptive time step.");
+  s.real("time/end", 1.0,
+         "simulated time to reach [s]; the run ends with the first step at or past it (the last "
+         "step is not shortened, so continuing to a later end follows the same trajectory)")
+      .positive()
+      .is_required();
+  s.real("time/cfl", 0.5, "CFL number: dt <= cfl h / max|u| on the grid").positive().at_most(5.0);
+  s.string("time/cfl_speed", "particles", {"particles", "grid"},
+           "the speed of the CFL bound: the largest of the grid's face velocities, which move the "
+           "particles, and the solids' surface speeds with gravity's change over the step (grid), "
+           "or of the grid's face velocities and the particles' own speeds (particles; "
+           "doc/coupling.md)");
+  s.real("time/dt_max", 1e-3, "largest time step [s]").positive();
+  s.real("time/dt_growth", 1.2,
+         "time/cfl_speed grid: largest ratio of a time step to the last one: after a short step "
+         "(a fast flow, an impact) dt grows back gradually; a large value lifts the bound")
+      .at_least(1.0);
+  s.real("time/dt_min", 1e-8, "smallest time step [s]; a step below it stops the run as blown up")
+      .positive();
+}
+
+TimeStepLimits time_step_limits_from(const core::Params& params) {
+  TimeStepLimits t{params.real("grid/cell_size"), params.real("time/cfl"),
+                   params.real("time/dt_max"), params.real("time/dt_min"), params.real("time/end")};
+  t.cfl_from_particles = params.string("time/cfl_speed") == "particles";
+  // time/dt_growth bounds the grid rule; particles is kept as it was before issue 13
+  t.growth = t.cfl_from_particles ? 0.0 : params.real("time/dt_growth");
+  return t;
+}
+
 double choose_time_step(const TimeStepLimits& set, const FluidConfig& cfg, double t, long long step,
                         const FluidState* fluid, const StepMotion& motion, double last_dt,
                         const core::Comm& comm) {

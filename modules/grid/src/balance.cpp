@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <string>
 
 #include "picdem/core/error.hpp"
 
@@ -134,6 +135,47 @@ Cuts cuts_of_boxes(const GridSpec& spec, const std::vector<IndexBox>& owned_cell
   }
   c.xs = std::move(xs), c.zs = std::move(zs);
   return c;
+}
+
+BalanceRule balance_rule_from(const core::Params& params) {
+  BalanceRule r;
+  r.weighted = params.string("grid/decomposition") == "weighted";
+  r.ranks_x = static_cast<int>(params.integer("grid/ranks_x"));
+  r.ranks_z = static_cast<int>(params.integer("grid/ranks_z"));
+  r.gain = params.real("grid/rebalance_gain");
+  r.interval = params.integer("grid/rebalance_interval");
+  return r;
+}
+
+std::optional<Cuts> worthwhile_cuts(const Decomposition& d, const std::vector<long long>& work,
+                                    const BalanceRule& rule) {
+  Cuts cuts = balanced_cuts(d, work, rule.ranks_x, rule.ranks_z);
+  if (cuts.xs == d.x_cuts() && cuts.zs == d.z_cuts()) return std::nullopt;
+  cuts.before = heaviest_block(d, work);
+  if (static_cast<double>(cuts.heaviest) > (1.0 - rule.gain) * static_cast<double>(cuts.before))
+    return std::nullopt;
+  return cuts;
+}
+
+std::string describe(const Cuts& cuts) {
+  auto list = [](const std::vector<int>& v) {
+    std::string out;
+    for (int c : v) out += (out.empty() ? "" : " ") + std::to_string(c);
+    return out;
+  };
+  return "cut lines x {" + list(cuts.xs) + "}, z {" + list(cuts.zs) + "}, heaviest block " +
+         std::to_string(cuts.before) + " -> " + std::to_string(cuts.heaviest) + " of " +
+         std::to_string(cuts.total);
+}
+
+Cuts fitting_cuts_of_boxes(const GridSpec& spec, const std::vector<IndexBox>& owned_cells,
+                           int ranks, const BalanceRule& rule) {
+  Cuts cuts = cuts_of_boxes(spec, owned_cells);
+  const auto strips = [](const std::vector<int>& c) { return static_cast<int>(c.size()) - 1; };
+  const bool fit = owned_cells.size() == static_cast<std::size_t>(ranks) && !cuts.xs.empty() &&
+                   (rule.ranks_x == 0 || rule.ranks_x == strips(cuts.xs)) &&
+                   (rule.ranks_z == 0 || rule.ranks_z == strips(cuts.zs));
+  return fit ? cuts : Cuts{};
 }
 
 }  // namespace picdem::grid

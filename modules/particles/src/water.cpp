@@ -77,4 +77,23 @@ bool WaterRegions::contains(core::Vec2 c) const {
   return false;
 }
 
+ParticleSet seed_water(const grid::Decomposition& d, const ParticleConfig& config,
+                       const WaterRegions& water, const std::function<bool(core::Vec2)>& in_body) {
+  using core::Vec2;
+  const auto wet = [&](Vec2 p) { return water.contains(p) && !(in_body && in_body(p)); };
+  const double r = 0.5 * d.spec().h;
+  auto ps = seed(
+      d, config,
+      [&](Vec2 c) {
+        return water.contains(c) || water.contains(c + Vec2{r, r}) ||
+               water.contains(c + Vec2{-r, r}) || water.contains(c + Vec2{r, -r}) ||
+               water.contains(c + Vec2{-r, -r});
+      },
+      wet);
+  std::vector<char> keep(ps.size());
+  for (std::size_t n = 0; n < keep.size(); ++n) keep[n] = wet({ps.x[n], ps.z[n]});
+  ps.keep_if(keep);
+  return ps;
+}
+
 }  // namespace picdem::particles

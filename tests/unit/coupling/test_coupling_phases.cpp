@@ -9,6 +9,7 @@
 
 #include "picdem/coupling/solids_in_fluid.hpp"
 #include "picdem/dem/parameters.hpp"
+#include "picdem/dem/scene.hpp"
 #include "picdem/geometry/circle.hpp"
 
 using namespace picdem;
@@ -91,7 +92,7 @@ TEST(GapDamping, BandAndLinearFactorOfEquation20) {
 // The snapshot at X^{n+1} is matched to the cut cells' bodies of X^n by id, not by position:
 // solid 3 left this rank's view (keeps its old motion), 12 is new (not a body of the cut cells).
 TEST(SolidSnapshot, MotionsMatchedById) {
-  coupling::SolidScene before, after;
+  dem::SolidScene before, after;
   before.states = {state(3, {0.1, 0.1}, {1.0, 0.0}), state(7, {0.2, 0.2}, {2.0, 0.0}),
                    state(9, {0.3, 0.3}, {3.0, 0.0})};
   after.states = {state(7, {0.25, 0.2}, {-2.0, 0.5}, 1.5), state(9, {0.3, 0.35}, {0.0, 3.0}),
@@ -101,7 +102,7 @@ TEST(SolidSnapshot, MotionsMatchedById) {
   EXPECT_EQ(after.index_of(3), -1);
   EXPECT_EQ(before.index_of(3), 0);
   EXPECT_EQ(before.index_of(8), -1);
-  const auto m = coupling::motions_at(before, after);
+  const auto m = dem::motions_at(before, after);
   ASSERT_EQ(m.size(), 3u);
   EXPECT_EQ(m[0].id, 3);
   EXPECT_EQ(m[0].v.x, 1.0);
@@ -133,7 +134,7 @@ TEST(SolidSnapshot, SceneOfTheDemIsOrderedById) {
         return Vec2{0.1 * s, 0.0};
       });
   const dem::DemSolver& dem = *dem_ptr;
-  const auto scene = coupling::scene_of(&dem, {});
+  const auto scene = dem::scene_of(&dem, {});
   const std::size_t seen = dem.owned().size() + dem.ghosts().size();
   ASSERT_EQ(scene.states.size(), seen);
   ASSERT_EQ(scene.placements.size(), seen);
@@ -165,7 +166,7 @@ TEST(SolidSnapshot, SceneOfAllHoldsEverySolidOnEveryRank) {
   geometry::Obstacle o;
   o.name = "step";
   o.polygons = {{{0.0, 0.0}, {0.1, 0.0}, {0.1, 0.05}, {0.0, 0.05}}};
-  const auto all = coupling::scene_of_all(dem.get(), {o});
+  const auto all = dem::scene_of_all(dem.get(), {o});
   ASSERT_EQ(all.states.size(), 5u);
   ASSERT_EQ(all.placements.size(), 5u);
   ASSERT_EQ(all.obstacles.size(), 1u);

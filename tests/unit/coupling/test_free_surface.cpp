@@ -3,7 +3,7 @@
 // holds no air (at the surface S < 1 is the surface); weighted by the fluid fraction of a cut cell.
 #include <gtest/gtest.h>
 
-#include "picdem/coupling/solids_in_fluid.hpp"
+#include "picdem/fluid/bodies.hpp"
 #include "picdem/fluid/free_surface.hpp"
 
 using namespace picdem;
@@ -65,10 +65,10 @@ TEST(ExcessArea, CappedAndNoDeficitAtTheSurface) {
 TEST(ExcessArea, CutCellWeightedByItsFluidFraction) {
   Tank t;
   // An obstacle covering the left half of cell (2, 1): fluid fraction 1/2.
-  coupling::SolidScene scene;
-  scene.obstacles.push_back({"block", {{{0.2, 0.1}, {0.25, 0.1}, {0.25, 0.2}, {0.2, 0.2}}}});
+  std::vector<geometry::Obstacle> obstacles;
+  obstacles.push_back({"block", {{{0.2, 0.1}, {0.25, 0.1}, {0.25, 0.2}, {0.2, 0.2}}}});
   fluid::Apertures E = fluid::open_apertures(*t.d);
-  const auto cut = coupling::cut_cells(scene, *t.d, 1e-3, E);
+  const auto cut = fluid::cut_cells({}, obstacles, 1e-3, *t.d, E);
   ASSERT_NEAR(cut.fluid_fraction(2, 1), 0.5, 1e-12);
   t.S(2, 1) = 1.4;
   CellField source(*t.d, Stagger::Cell, 0.0);

@@ -30,6 +30,12 @@ void wet_enclosed_cut_cells(const grid::Decomposition& d, const geometry::CutCel
 /// The open lengths of the faces with bodies: min(the tank's apertures, the cut cells' E).
 Apertures body_apertures(const geometry::CutCells& cut, const grid::Decomposition& d);
 
+/// The cut cells of `solids` and `obstacles` over this rank's storage window (a cell whose fluid
+/// fraction is below tiny_fraction is made solid: doc/geometry.md) and their body_apertures.
+geometry::CutCells cut_cells(const std::vector<geometry::SolidPlacement>& solids,
+                             const std::vector<geometry::Obstacle>& obstacles, double tiny_fraction,
+                             const grid::Decomposition& d, Apertures& apertures);
+
 /// Faces closed by a body (E = 0, on the grid's interior) get its rigid velocity v + omega x r,
 /// bodies[b] the motion of cut body b (obstacles: 0), and are marked valid, so that
 /// interpolation next to a solid sees the solid's motion.

@@ -62,6 +62,19 @@ struct FluidConfig {
 /// Reads the fluid/ keys and grid/cell_size (declared by grid::declare_parameters).
 FluidConfig config_from(const core::Params& params);
 
+/// The free_surface/ keys, read once.
+struct FreeSurfaceConfig {
+  bool ghost_fluid = true;          ///< method ghost_fluid (else p = 0 at air cell centres)
+  double theta_min = 0.01;          ///< theta_min
+  double density_relaxation = 0.0;  ///< density_correction (0: off)
+  long long density_interval = 1;   ///< density_correction_interval
+  /// Whether the density is corrected at step `step`.
+  bool corrects_density(long long step) const {
+    return density_relaxation > 0.0 && step % density_interval == 0;
+  }
+};
+FreeSurfaceConfig free_surface_config_from(const core::Params& params);
+
 /// Whether tank wall `wall` is no-slip: its own setting, else FluidConfig::no_slip.
 inline bool no_slip_at(const FluidConfig& cfg, TankWall wall) {
   const auto& own = cfg.wall_no_slip[static_cast<std::size_t>(wall)];

@@ -1,10 +1,13 @@
 #pragma once
 // Where the fluid is at t = 0: the case's `water` family (blocks and still-water levels, their
-// union), declared with its checks against the tank, and read once for seeding.
+// union), declared with its checks against the tank, read once, and seeded.
+#include <functional>
 #include <vector>
 
 #include "picdem/core/params.hpp"
 #include "picdem/core/vec2.hpp"
+#include "picdem/grid/grid.hpp"
+#include "picdem/particles/particle_set.hpp"
 
 namespace picdem::particles {
 
@@ -28,5 +31,13 @@ class WaterRegions {
   };
   std::vector<Region> regions_;
 };
+
+/// The water at t = 0 (particles::seed): cells are seeded whose centre or a corner is in the
+/// water, and particles outside it or inside a body (`in_body`, may be null) are removed, so
+/// that cut cells whose centre is covered still get particles in their fluid part. The seeding's
+/// jitter keeps the lattice's occupancy over the particles whose lattice position is wet: a
+/// level surface on a cell face is seeded flat.
+ParticleSet seed_water(const grid::Decomposition& decomposition, const ParticleConfig& config,
+                       const WaterRegions& water, const std::function<bool(core::Vec2)>& in_body);
 
 }  // namespace picdem::particles
