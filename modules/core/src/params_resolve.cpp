@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -90,6 +91,27 @@ struct SchemaResolver {
     return true;
   }
 
+  // The entry's value when it holds what YAML gives for the kind (an integer; a real or an
+  // integer; a list of reals or of integers), else nullopt.
+  static std::optional<long long> integer_of(const Teuchos::ParameterEntry& e) {
+    if (e.isType<int>()) return Teuchos::getValue<int>(e);
+    if (e.isType<long long>()) return Teuchos::getValue<long long>(e);
+    return std::nullopt;
+  }
+  static std::optional<double> real_of(const Teuchos::ParameterEntry& e) {
+    if (e.isType<double>()) return Teuchos::getValue<double>(e);
+    if (e.isType<int>()) return Teuchos::getValue<int>(e);
+    if (e.isType<long long>()) return static_cast<double>(Teuchos::getValue<long long>(e));
+    return std::nullopt;
+  }
+  static std::optional<Teuchos::Array<double>> reals_of(const Teuchos::ParameterEntry& e) {
+    if (e.isType<Teuchos::Array<double>>()) return Teuchos::getValue<Teuchos::Array<double>>(e);
+    if (!e.isType<Teuchos::Array<int>>()) return std::nullopt;
+    Teuchos::Array<double> v;
+    for (int x : Teuchos::getValue<Teuchos::Array<int>>(e)) v.push_back(x);
+    return v;
+  }
+
   void value(const ParamDecl& d, const Teuchos::ParameterEntry& e, ParameterList& out,
              const std::string& name) {
     const std::string key = "'" + prefix + d.path + "'";
@@ -112,31 +134,19 @@ struct SchemaResolver {
     }
     switch (d.kind) {
       case ParamKind::Integer: {
-        long long v;
-        if (e.isType<int>())
-          v = Teuchos::getValue<int>(e);
-        else if (e.isType<long long>())
-          v = Teuchos::getValue<long long>(e);
-        else
-          return bad_type();
-        if (!in_range(d, static_cast<double>(v)) || v > std::numeric_limits<int>::max() ||
-            v < std::numeric_limits<int>::min())
-          return out_of_range(std::to_string(v));
-        out.set(name, static_cast<int>(v));
+        const auto v = integer_of(e);
+        if (!v) return bad_type();
+        if (!in_range(d, static_cast<double>(*v)) || *v > std::numeric_limits<int>::max() ||
+            *v < std::numeric_limits<int>::min())
+          return out_of_range(std::to_string(*v));
+        out.set(name, static_cast<int>(*v));
         return;
       }
       case ParamKind::Real: {
-        double v;
-        if (e.isType<double>())
-          v = Teuchos::getValue<double>(e);
-        else if (e.isType<int>())
-          v = Teuchos::getValue<int>(e);
-        else if (e.isType<long long>())
-          v = static_cast<double>(Teuchos::getValue<long long>(e));
-        else
-          return bad_type();
-        if (!in_range(d, v)) return out_of_range(fmt(v));
-        out.set(name, v);
+        const auto v = real_of(e);
+        if (!v) return bad_type();
+        if (!in_range(d, *v)) return out_of_range(fmt(*v));
+        out.set(name, *v);
         return;
       }
       case ParamKind::Boolean:
@@ -153,21 +163,16 @@ struct SchemaResolver {
         return;
       }
       case ParamKind::RealArray: {
-        Teuchos::Array<double> v;
-        if (e.isType<Teuchos::Array<double>>())
-          v = Teuchos::getValue<Teuchos::Array<double>>(e);
-        else if (e.isType<Teuchos::Array<int>>())
-          for (int x : Teuchos::getValue<Teuchos::Array<int>>(e)) v.push_back(x);
-        else
-          return bad_type();
-        if (static_cast<int>(v.size()) < d.min_size || static_cast<int>(v.size()) > d.max_size) {
-          errors.push_back("key " + key + " has " + std::to_string(v.size()) +
+        const auto v = reals_of(e);
+        if (!v) return bad_type();
+        if (static_cast<int>(v->size()) < d.min_size || static_cast<int>(v->size()) > d.max_size) {
+          errors.push_back("key " + key + " has " + std::to_string(v->size()) +
                            " values; allowed: " + d.allowed());
           return;
         }
-        for (double x : v)
+        for (double x : *v)
           if (!in_range(d, x)) return out_of_range("a list holding " + fmt(x));
-        out.set(name, v);
+        out.set(name, *v);
         return;
       }
       case ParamKind::Passthrough:
