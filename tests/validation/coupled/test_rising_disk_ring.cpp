@@ -22,15 +22,14 @@
 #include "case_loader.hpp"
 #include "picdem/coupling/simulation.hpp"
 #include "picdem/dem/dem_solver.hpp"
+#include "ring_stokes.hpp"
 
 using namespace picdem;
 
 namespace {
 
-double terminal_speed_reference() {
-  const double a = 0.01, b = 0.04, drho = 1000.0 - 800.0, g = 9.81, mu = 1000.0 * 1e-2;
-  const double K = std::log(b / a) - (b * b - a * a) / (b * b + a * a);
-  return drho * g * a * a * K / (4.0 * mu);  // U_t [m/s]
+double terminal_speed_reference() {  // a = 0.01, b = 0.04 m, rho_s = 800, nu = 1e-2 m^2/s
+  return test_support::ring_stokes_terminal_speed(0.01, 0.04, 800.0, 1000.0, 1e-2);
 }
 
 struct Rise {
