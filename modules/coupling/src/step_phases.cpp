@@ -111,16 +111,6 @@ void particles_to_grid(const Layout& L, const StepSettings& set, const SolidsAtS
   f.u_old = f.u, f.w_old = f.w;
 }
 
-namespace {
-
-// The solids `dem` owns (none without a DEM).
-const std::vector<core::SolidState>& owned_solids(const dem::DemSolver* dem) {
-  static const std::vector<core::SolidState> none;
-  return dem ? dem->owned() : none;
-}
-
-}  // namespace
-
 // Viscosity explicit, or implicit at the true boundaries of every solid (at X^n) and obstacle.
 fluid::ViscousExchange add_forces(const Layout& L, const fluid::FluidConfig& cfg, bool rigid_rows,
                                   const dem::DemSolver* dem,
@@ -135,7 +125,7 @@ fluid::ViscousExchange add_forces(const Layout& L, const fluid::FluidConfig& cfg
     const dem::SolidScene all = dem::scene_of_all(dem, obstacles);
     viscous = fluid::add_forces_implicit(
         cfg, fluid::viscous_bodies(all.placements, all.states, all.obstacles, rigid_rows),
-        all.states, owned_solids(dem), rigid_rows, dt, surface, L.d, L.halo, L.comm, f);
+        all.states, dem::owned_solids(dem), rigid_rows, dt, surface, L.d, L.halo, L.comm, f);
   }
   // outflow faces with du_n / dn = 0 before the projection (doc/open_boundaries.md)
   if (std::any_of(cfg.open.side.begin(), cfg.open.side.end(),

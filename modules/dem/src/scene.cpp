@@ -5,6 +5,11 @@
 
 namespace picdem::dem {
 
+const std::vector<core::SolidState>& owned_solids(const DemSolver* dem) {
+  static const std::vector<core::SolidState> none;
+  return dem ? dem->owned() : none;
+}
+
 SolidScene scene_of(const DemSolver* dem, const std::vector<geometry::Obstacle>& obstacles) {
   SolidScene scene;
   scene.obstacles = obstacles;

@@ -145,6 +145,19 @@ void ParticleSet::keep_if(const std::vector<char>& keep) {
   keep_in(id, keep);
 }
 
+long long ParticleSet::scale_velocities(const std::function<double(core::Vec2)>& factor) {
+  long long scaled = 0;
+  for (std::size_t n = 0; n < x.size(); ++n) {
+    const double C = factor({x[n], z[n]});
+    if (C < 1.0) {
+      u[n] *= C, w[n] *= C;
+      cxx[n] *= C, cxz[n] *= C, czx[n] *= C, czz[n] *= C;
+      ++scaled;
+    }
+  }
+  return scaled;
+}
+
 void ParticleSet::permute(const std::vector<std::size_t>& order) {
   std::vector<double> tmp;
   for (auto* v : {&x, &z, &u, &w, &cxx, &cxz, &czx, &czz}) permute_in(*v, order, tmp);

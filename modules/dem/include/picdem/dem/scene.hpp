@@ -24,6 +24,9 @@ struct SolidScene {
   int index_of(std::int64_t id) const;
 };
 
+/// The solids `dem` owns (none when dem is null).
+const std::vector<core::SolidState>& owned_solids(const DemSolver* dem);
+
 /// The solids `dem` holds on this rank (owned and ghosts; none when dem is null) and `obstacles`.
 SolidScene scene_of(const DemSolver* dem, const std::vector<geometry::Obstacle>& obstacles);
 

@@ -57,6 +57,9 @@ struct ParticleSet {
   void keep_if(const std::vector<char>& keep);
   /// Reorders the particles: particle n takes the place of particle order[n].
   void permute(const std::vector<std::size_t>& order);
+  /// Multiplies the velocity and C of every particle whose factor(position) is below 1 by that
+  /// factor (the gap damping of eq. 20, coupling::damp_gap_particles); returns how many.
+  long long scale_velocities(const std::function<double(core::Vec2)>& factor);
 
   /// The arrays a checkpoint keeps (everything but `spec`), in one place: f(name, array) for
   /// x, z, u, w, cxx, cxz, czx, czz (double) and id (int64), in this order. The order of the
