@@ -33,6 +33,8 @@
 #include "picdem/coupling/schema.hpp"
 #include "picdem/coupling/simulation.hpp"
 #include "picdem/coupling/solids_in_fluid.hpp"
+#include "picdem/dem/scene.hpp"
+#include "picdem/fluid/bodies.hpp"
 #include "picdem/fluid/fluid_state.hpp"
 #include "picdem/fluid/pressure_solver.hpp"
 #include "picdem/grid/grid.hpp"
@@ -148,7 +150,8 @@ int main(int argc, char** argv) {
     geometry::CutCells cut;
     if (bodies) {
       fluid::Apertures apertures = sim.fluid().apertures;
-      cut = coupling::cut_cells(coupling::scene_of(sim.dem(), sim.obstacles()), d, tiny, apertures);
+      const dem::SolidScene scene = dem::scene_of(sim.dem(), sim.obstacles());
+      cut = fluid::cut_cells(scene.placements, scene.obstacles, tiny, d, apertures);
     }
     const long long reseed_step = sim.step_count();
     sim.step();
