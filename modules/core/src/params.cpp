@@ -144,6 +144,22 @@ std::string Params::to_yaml() const {
 // ---------------------------------------------------------------------------------------------
 // Reading
 
+namespace {
+// Teuchos' reading of YAML text whose one top-level key names the list, with the forms its reader
+// refuses (multi-line flow collections, empty lists) handled first (detail::readable_yaml).
+Teuchos::RCP<ParameterList> read_yaml(const std::string& text, const std::string& source) {
+  const detail::ReadableYaml readable = detail::readable_yaml(text, 1);
+  Teuchos::RCP<ParameterList> pl;
+  try {
+    pl = Teuchos::getParametersFromYamlString(readable.text);
+  } catch (const std::exception& e) {
+    throw InputError(yaml_error_message(e.what(), source));
+  }
+  detail::put_back_empty_arrays(*pl, readable);
+  return pl;
+}
+}  // namespace
+
 std::shared_ptr<ParameterList> parse_yaml(const std::string& text, const std::string& source) {
   // Teuchos wants exactly one top-level key naming the list: wrap the user's mapping.
   bool has_content = false;
@@ -161,13 +177,7 @@ std::shared_ptr<ParameterList> parse_yaml(const std::string& text, const std::st
   if (!has_content) throw InputError(source + ": the file holds no parameters (empty case file)");
   if (text.find('\0') != std::string::npos)
     throw InputError(source + ": not a text file (holds NUL bytes); a case file is YAML");
-  Teuchos::RCP<ParameterList> pl;
-  try {
-    pl = Teuchos::getParametersFromYamlString(wrapped);
-  } catch (const std::exception& e) {
-    throw InputError(yaml_error_message(e.what(), source));
-  }
-  return std::make_shared<ParameterList>(*pl);
+  return std::make_shared<ParameterList>(*read_yaml(wrapped, source));
 }
 
 void apply_override(ParameterList& list, const std::string& assignment) {
@@ -194,45 +204,7 @@ Params read_case_text(const std::string& text, const std::string& source,
 
 Params resolve_written_case(const std::string& yaml, const std::string& source,
                             const ParamSchema& schema) {
-  // Teuchos' reader refuses the empty arrays its writer prints ("key: []"): read the text without
-  // them, then put them back as empty real arrays (the only array kind of a case).
-  std::string text;
-  std::vector<std::pair<std::vector<std::string>, std::string>> empty_arrays;  // sublists, key
-  std::vector<std::pair<std::size_t, std::string>> open;  // indentation, name of each open sublist
-  std::istringstream in(yaml);
-  for (std::string line; std::getline(in, line);) {
-    const auto indent = line.find_first_not_of(' ');
-    const auto colon = line.find(": ");
-    const bool entry = indent != std::string::npos && colon != std::string::npos;
-    if (entry) {
-      while (!open.empty() && open.back().first >= indent) open.pop_back();
-      const std::string key = line.substr(indent, colon - indent);
-      const std::string value = line.substr(colon + 2);
-      if (value == "[]") {
-        std::vector<std::string> path;
-        for (std::size_t n = 1; n < open.size(); ++n) path.push_back(open[n].second);
-        empty_arrays.emplace_back(path, key);
-        continue;
-      }
-      if (value.find_first_not_of(' ') == std::string::npos) open.emplace_back(indent, key);
-    } else if (indent != std::string::npos && line.back() == ':') {
-      while (!open.empty() && open.back().first >= indent) open.pop_back();
-      open.emplace_back(indent, line.substr(indent, line.size() - 1 - indent));
-    }
-    text += line + "\n";
-  }
-  Teuchos::RCP<ParameterList> pl;
-  try {
-    pl = Teuchos::getParametersFromYamlString(text);
-  } catch (const std::exception& e) {
-    throw InputError(yaml_error_message(e.what(), source));
-  }
-  for (const auto& [path, key] : empty_arrays) {
-    ParameterList* list = pl.get();
-    for (const auto& name : path) list = &list->sublist(name);
-    list->set(key, Teuchos::Array<double>());
-  }
-  return schema.resolve(*pl, source);
+  return schema.resolve(*read_yaml(yaml, source), source);  // "key: []" as Teuchos writes it
 }
 
 std::string case_file_path(const Comm& comm, const std::string& path) {

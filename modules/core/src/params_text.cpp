@@ -79,4 +79,105 @@ bool has_path(const ParameterList& root, const std::string& path) {
   return pl->isParameter(parts.back());
 }
 
+namespace {
+
+// Line `line` with the flow collections still open after it counted into `depth` (brackets inside
+// quotes and after a comment's '#' do not count).
+void count_brackets(const std::string& line, int& depth) {
+  char quote = 0;
+  for (std::size_t k = 0; k < line.size(); ++k) {
+    const char c = line[k];
+    if (quote) {
+      if (c == quote) quote = 0;
+    } else if (c == '\'' || c == '"') {
+      quote = c;
+    } else if (c == '#' && (k == 0 || line[k - 1] == ' ' || line[k - 1] == '\t')) {
+      return;
+    } else if (c == '[' || c == '{') {
+      ++depth;
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
+}
+
+// The line without a trailing comment (outside quotes).
+std::string without_comment(const std::string& line) {
+  char quote = 0;
+  for (std::size_t k = 0; k < line.size(); ++k) {
+    const char c = line[k];
+    if (quote) {
+      if (c == quote) quote = 0;
+    } else if (c == '\'' || c == '"') {
+      quote = c;
+    } else if (c == '#' && (k == 0 || line[k - 1] == ' ' || line[k - 1] == '\t')) {
+      return line.substr(0, k);
+    }
+  }
+  return line;
+}
+
+}  // namespace
+
+ReadableYaml readable_yaml(const std::string& yaml, std::size_t skip_levels) {
+  // Join the continuation lines of open flow collections.
+  std::vector<std::string> lines;
+  {
+    std::istringstream in(yaml);
+    std::string joined;
+    int depth = 0, pending = 0;
+    for (std::string line; std::getline(in, line);) {
+      if (depth > 0) {
+        const auto first = line.find_first_not_of(" \t");
+        joined += " " + without_comment(first == std::string::npos ? "" : line.substr(first));
+        ++pending;
+      } else {
+        joined = line;
+      }
+      count_brackets(line, depth);
+      if (depth > 0) {
+        joined = without_comment(joined);
+        continue;
+      }
+      lines.push_back(joined);
+      for (; pending > 0; --pending) lines.emplace_back();
+    }
+    if (depth > 0) lines.push_back(joined);  // unclosed: left for the reader to refuse
+  }
+  // Take out "key: []", remembering its sublists.
+  ReadableYaml out;
+  std::vector<std::pair<std::size_t, std::string>> open;  // indentation, name of each open sublist
+  for (const std::string& line : lines) {
+    const auto indent = line.find_first_not_of(' ');
+    const auto colon = line.find(": ");
+    if (indent != std::string::npos && colon != std::string::npos) {
+      while (!open.empty() && open.back().first >= indent) open.pop_back();
+      const std::string key = line.substr(indent, colon - indent);
+      const std::string value = without_comment(line.substr(colon + 2));
+      const auto last = value.find_last_not_of(" \t");
+      if (last != std::string::npos && value.substr(0, last + 1) == "[]") {
+        std::vector<std::string> path;
+        for (std::size_t n = skip_levels; n < open.size(); ++n) path.push_back(open[n].second);
+        out.empty_arrays.emplace_back(path, key);
+        out.text += "\n";
+        continue;
+      }
+      if (last == std::string::npos) open.emplace_back(indent, key);
+    } else if (indent != std::string::npos && line.back() == ':') {
+      while (!open.empty() && open.back().first >= indent) open.pop_back();
+      open.emplace_back(indent, line.substr(indent, line.size() - 1 - indent));
+    }
+    out.text += line + "\n";
+  }
+  return out;
+}
+
+void put_back_empty_arrays(Teuchos::ParameterList& root, const ReadableYaml& y) {
+  for (const auto& [path, key] : y.empty_arrays) {
+    Teuchos::ParameterList* list = &root;
+    for (const auto& name : path) list = &list->sublist(name);
+    list->set(key, Teuchos::Array<double>());
+  }
+}
+
 }  // namespace picdem::core::detail

@@ -80,6 +80,30 @@ TEST(Params, FamilyMembersValidatedByVariant) {
 }
 
 // At least fifteen kinds of bad input, each with its message.
+// Teuchos' YAML reader refuses two forms YAML allows; the case reader takes both.
+TEST(Params, FlowCollectionsOverSeveralLines) {
+  auto p = read_case_text(
+      "grid:\n  origin: [0.5,   # x\n           1.5]  # z\n  nx: 12\ntime: {end:\n  2}\n"
+      "obstacles:\n  wall: {type: box,\n    hi: [2,\n     3]}\n",
+      "case.yaml", {}, schema());
+  EXPECT_EQ(p.reals("grid/origin"), (std::vector<double>{0.5, 1.5}));
+  EXPECT_EQ(p.integer("grid/nx"), 12);
+  EXPECT_DOUBLE_EQ(p.real("time/end"), 2.0);
+  EXPECT_EQ(p.reals("obstacles/wall/hi"), (std::vector<double>{2.0, 3.0}));
+}
+TEST(Params, EmptyListIsAnEmptyArray) {
+  // An empty list where the schema allows one is read; where it needs values, the key is named.
+  expect_error("time:\n  end: 1\ngrid:\n  origin: []   # none\n", {"grid/origin", "has 0 values"});
+  expect_error("time:\n  end: []\n", {"time/end"});
+  expect_error("time:\n  end: 1\n", {"grid/origin", "has 0 values"}, {"grid/origin=[]"});
+}
+TEST(ParamsBad, LineNumbersCountTheJoinedLines) {
+  // A flow list over three lines, then a bad line: the message names the file's line (7).
+  const std::string msg =
+      error_of("grid:\n  origin: [0,\n\n    0]\ntime:\n  end: 1\n  x: \"a\" b\n");
+  EXPECT_NE(msg.find("line 7"), std::string::npos) << msg;
+}
+
 TEST(ParamsBad, UnknownKeySuggestsSpelling) {
   expect_error("time:\n  end: 1\nfluid:\n  densty: 1000\n",
                {"unknown key 'fluid/densty'", "did you mean 'fluid/density'", "density"});
