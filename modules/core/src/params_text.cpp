@@ -81,9 +81,9 @@ bool has_path(const ParameterList& root, const std::string& path) {
 
 namespace {
 
-// Line `line` with the flow collections still open after it counted into `depth` (brackets inside
-// quotes and after a comment's '#' do not count).
-void count_brackets(const std::string& line, int& depth) {
+// Scans `line` outside quotes: adds the flow collections it opens and closes to `depth` and
+// returns where its comment ('#' after a blank or at the start) begins, npos without one.
+std::size_t scan_line(const std::string& line, int& depth) {
   char quote = 0;
   for (std::size_t k = 0; k < line.size(); ++k) {
     const char c = line[k];
@@ -92,29 +92,23 @@ void count_brackets(const std::string& line, int& depth) {
     } else if (c == '\'' || c == '"') {
       quote = c;
     } else if (c == '#' && (k == 0 || line[k - 1] == ' ' || line[k - 1] == '\t')) {
-      return;
+      return k;
     } else if (c == '[' || c == '{') {
       ++depth;
     } else if ((c == ']' || c == '}') && depth > 0) {
       --depth;
     }
   }
+  return std::string::npos;
 }
 
-// The line without a trailing comment (outside quotes).
+void count_brackets(const std::string& line, int& depth) {
+  scan_line(line, depth);
+}
+
 std::string without_comment(const std::string& line) {
-  char quote = 0;
-  for (std::size_t k = 0; k < line.size(); ++k) {
-    const char c = line[k];
-    if (quote) {
-      if (c == quote) quote = 0;
-    } else if (c == '\'' || c == '"') {
-      quote = c;
-    } else if (c == '#' && (k == 0 || line[k - 1] == ' ' || line[k - 1] == '\t')) {
-      return line.substr(0, k);
-    }
-  }
-  return line;
+  int depth = 0;
+  return line.substr(0, scan_line(line, depth));
 }
 
 }  // namespace
