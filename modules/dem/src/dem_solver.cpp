@@ -397,7 +397,16 @@ void DemSolver::advance(double dt, const std::vector<SolidLoads>& fluid_loads) {
     throw core::SolverError(m.str());
   }
   // K = INT(dt / dt_DEM), dt_DEM = dt / K; eq. 25: dt_DEM = dt if dt_DEM > dt
-  const int K = std::max(1, static_cast<int>(dt / dt_dem_));
+  const double cycles = std::floor(dt / dt_dem_);
+  if (!(cycles <= static_cast<double>(std::numeric_limits<int>::max()))) {
+    // a converted count beyond int would be undefined (it became one subcycle of the whole dt)
+    std::ostringstream m;
+    m << "DemSolver::advance: dt = " << dt << " s needs " << cycles
+      << " subcycles of dt_DEM = " << dt_dem_ << " s, more than " << std::numeric_limits<int>::max()
+      << "; lower time/dt_max";
+    throw core::SolverError(m.str());
+  }
+  const int K = std::max(1, static_cast<int>(cycles));
   const double h = dt / K;
   last_subcycles_ = K;
 

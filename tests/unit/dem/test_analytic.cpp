@@ -6,9 +6,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <string>
 #include <utility>
 
 #include "dem_fixtures.hpp"
+#include "picdem/core/error.hpp"
 #include "picdem/core/rng.hpp"
 
 using namespace picdem;
@@ -154,6 +157,25 @@ TEST(AtRest, DiskAndBlockOnALevelFloorDoNotDrift) {
   // about a fifth of that kick (1.8e-4 m/s), not a drift
   EXPECT_NEAR(s.owned()[0].v.z, 0.0, 0.25 * g * 1e-4);
   EXPECT_NEAR(s.owned()[1].v.z, 0.0, 0.25 * g * 1e-4);
+}
+
+// A fluid step too long for an int count of subcycles (time/dt_max = 1e30 s in a dry case) is
+// refused; before, the count overflowed and one subcycle of the whole step blew the pile up.
+TEST(Subcycles, StepNeedingMoreThanIntMaxSubcyclesIsRefused) {
+  DemConfig cfg;
+  cfg.h = 2.5e-4;
+  DemSolver s = solver(cfg, 1.0, 0.3);
+  s.add_solids({disk(0, 0.02, 2700.0, {0.2, 0.02 + cfg.gap()})});
+  const double too_long = 4.0 * std::numeric_limits<int>::max() * s.dt_dem();
+  try {
+    s.advance(too_long, {});
+    FAIL() << "a step of " << too_long << " s was taken";
+  } catch (const core::SolverError& e) {
+    EXPECT_NE(std::string(e.what()).find("time/dt_max"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(s.owned()[0].x.x, 0.2);
+  s.advance(1e-4, {});  // a normal step still runs: K = 1e-4 / dt_DEM subcycles
+  EXPECT_GT(s.last_subcycles(), 1);
 }
 
 class PileAtRest : public ::testing::TestWithParam<TangentialModel> {};
