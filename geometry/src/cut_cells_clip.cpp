@@ -29,12 +29,6 @@ double cross_at(Vec2 a, Vec2 b, double X) {
   const double t = along(a) + (X - across(a)) / (across(b) - across(a)) * (along(b) - along(a));
   return std::clamp(t, std::min(along(a), along(b)), std::max(along(a), along(b)));
 }
-double cross_at_x(Vec2 a, Vec2 b, double X) {
-  return cross_at<kVertical>(a, b, X);
-}
-double cross_at_z(Vec2 a, Vec2 b, double Z) {
-  return cross_at<kHorizontal>(a, b, Z);
-}
 
 bool is_integer(double v) {
   return v == std::floor(v);
@@ -100,42 +94,52 @@ void emit_segment_subs(Builder& bd) {
   }
 }
 
+/// The segment a-b's crossings of the vertical (kind = kVertical: x = j) or horizontal
+/// (kHorizontal: z = j) grid lines of the window strictly between its ends, as events along it.
+template <int kind>
+void line_crossings(const Vec2 a, const Vec2 b, Builder& bd) {
+  const double a_c = kind == kVertical ? a.x : a.z, b_c = kind == kVertical ? b.x : b.z;
+  if (a_c == b_c) return;
+  const int lo = kind == kVertical ? bd.W.i0 : bd.W.k0, hi = kind == kVertical ? bd.W.i1 : bd.W.k1;
+  const int j0 = std::max(lo, floor_int(std::min(a_c, b_c)) + 1);
+  const int j1 = std::min(hi, static_cast<int>(std::ceil(std::max(a_c, b_c))) - 1);
+  for (int j = j0; j <= j1; ++j) {
+    const double c = cross_at<kind>(a, b, j);
+    const Vec2 p = kind == kVertical ? Vec2{double(j), c} : Vec2{c, double(j)};
+    bd.events.push_back({(j - a_c) / (b_c - a_c), p, {kind, j}});
+  }
+}
+
+/// Coverage events of the segment a-b on the vertical (kVertical) or horizontal lines of B it
+/// reaches, for the lines shifted by +eps (plus) and -eps (minus).
+template <int kind>
+void line_coverage(const Vec2 a, const Vec2 b, Builder& bd) {
+  const double a_c = kind == kVertical ? a.x : a.z, b_c = kind == kVertical ? b.x : b.z;
+  // The sign of the crossing: +1 towards larger xi on a vertical line; along a horizontal line
+  // the solid is on the left: travelling -zeta, it lies at +xi (the sign flips).
+  const int dir = (b_c > a_c) == (kind == kVertical) ? 1 : -1;
+  const int lo = kind == kVertical ? bd.B.i0 : bd.B.k0, hi = kind == kVertical ? bd.B.i1 : bd.B.k1;
+  auto& plus = kind == kVertical ? bd.ex_plus : bd.ez_plus;
+  auto& minus = kind == kVertical ? bd.ex_minus : bd.ez_minus;
+  for (int j = std::max(lo, static_cast<int>(std::ceil(std::min(a_c, b_c))));
+       j <= std::min(hi, floor_int(std::max(a_c, b_c))); ++j) {
+    if ((a_c > j) != (b_c > j)) plus[j - lo].push_back({cross_at<kind>(a, b, j), dir});
+    if ((a_c >= j) != (b_c >= j)) minus[j - lo].push_back({cross_at<kind>(a, b, j), dir});
+  }
+}
+
 /// Splits the segment a-b at the grid lines and adds its crossings of the shifted lines.
 void split_segment(const Vec2 a, const Vec2 b, Builder& bd) {
   auto& ev = bd.events;
   ev.clear();
   ev.push_back({0.0, a, {}});
-  if (a.x != b.x) {
-    const int j0 = std::max(bd.W.i0, floor_int(std::min(a.x, b.x)) + 1);
-    const int j1 = std::min(bd.W.i1, static_cast<int>(std::ceil(std::max(a.x, b.x))) - 1);
-    for (int j = j0; j <= j1; ++j) {
-      ev.push_back({(j - a.x) / (b.x - a.x), {double(j), cross_at_x(a, b, j)}, {kVertical, j}});
-    }
-  }
-  if (a.z != b.z) {
-    const int k0 = std::max(bd.W.k0, floor_int(std::min(a.z, b.z)) + 1);
-    const int k1 = std::min(bd.W.k1, static_cast<int>(std::ceil(std::max(a.z, b.z))) - 1);
-    for (int k = k0; k <= k1; ++k) {
-      ev.push_back({(k - a.z) / (b.z - a.z), {cross_at_z(a, b, k), double(k)}, {kHorizontal, k}});
-    }
-  }
+  line_crossings<kVertical>(a, b, bd);
+  line_crossings<kHorizontal>(a, b, bd);
   std::sort(ev.begin() + 1, ev.end(), [](const Event& p, const Event& q) { return p.t < q.t; });
   ev.push_back({1.0, b, {}});
   emit_segment_subs(bd);
-  // Coverage events on the lines this edge reaches, for the lines shifted by -eps and +eps.
-  const int dir_x = b.x > a.x ? 1 : -1;
-  for (int j = std::max(bd.B.i0, static_cast<int>(std::ceil(std::min(a.x, b.x))));
-       j <= std::min(bd.B.i1, floor_int(std::max(a.x, b.x))); ++j) {
-    if ((a.x > j) != (b.x > j)) bd.ex_plus[j - bd.B.i0].push_back({cross_at_x(a, b, j), dir_x});
-    if ((a.x >= j) != (b.x >= j)) bd.ex_minus[j - bd.B.i0].push_back({cross_at_x(a, b, j), dir_x});
-  }
-  // Along a horizontal line the solid is on the left: travelling -zeta, it lies at +xi.
-  const int dir_z = b.z > a.z ? -1 : 1;
-  for (int k = std::max(bd.B.k0, static_cast<int>(std::ceil(std::min(a.z, b.z))));
-       k <= std::min(bd.B.k1, floor_int(std::max(a.z, b.z))); ++k) {
-    if ((a.z > k) != (b.z > k)) bd.ez_plus[k - bd.B.k0].push_back({cross_at_z(a, b, k), dir_z});
-    if ((a.z >= k) != (b.z >= k)) bd.ez_minus[k - bd.B.k0].push_back({cross_at_z(a, b, k), dir_z});
-  }
+  line_coverage<kVertical>(a, b, bd);
+  line_coverage<kHorizontal>(a, b, bd);
 }
 
 // ---- arcs ------------------------------------------------------------------------------------

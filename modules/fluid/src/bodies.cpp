@@ -4,12 +4,21 @@
 #include <utility>
 
 #include "picdem/fluid/free_surface.hpp"
+#include "picdem/grid/axis.hpp"
 
 namespace picdem::fluid {
 
 using core::Vec2;
+using grid::Axis;
 using grid::CellState;
 using grid::Stagger;
+
+namespace {
+/// The bodies' aperture of the face (i, k) normal to axis a.
+double cut_aperture(const geometry::CutCells& cut, Axis a, int i, int k) {
+  return a == Axis::X ? cut.E_x(i, k) : cut.E_z(i, k);
+}
+}  // namespace
 
 void mark_cells(const grid::GridArray<int>& count, const geometry::CutCells* cut,
                 const grid::Decomposition& d, const grid::Halo& halo, bool ghost_fluid,
@@ -95,12 +104,12 @@ void wet_enclosed_cut_cells(const grid::Decomposition& d, const geometry::CutCel
 
 Apertures body_apertures(const geometry::CutCells& cut, const grid::Decomposition& d) {
   Apertures E = open_apertures(d);
-  const auto bu = E.E_x.storage();
-  for (int k = bu.k0; k < bu.k1; ++k)
-    for (int i = bu.i0; i < bu.i1; ++i) E.E_x(i, k) = std::min(E.E_x(i, k), cut.E_x(i, k));
-  const auto bw = E.E_z.storage();
-  for (int k = bw.k0; k < bw.k1; ++k)
-    for (int i = bw.i0; i < bw.i1; ++i) E.E_z(i, k) = std::min(E.E_z(i, k), cut.E_z(i, k));
+  for (const Axis a : grid::kAxes) {
+    grid::FaceField& e = along(a, E.E_x, E.E_z);
+    const auto b = e.storage();
+    for (int k = b.k0; k < b.k1; ++k)
+      for (int i = b.i0; i < b.i1; ++i) e(i, k) = std::min(e(i, k), cut_aperture(cut, a, i, k));
+  }
   return E;
 }
 
@@ -137,26 +146,24 @@ void rigid_face_velocities(const std::vector<core::SolidState>& bodies,
           (in1 && cut.cutting_obstacle(i1, k1) >= 0);
     return body;
   };
-  const auto bu = u.storage();
-  for (int k = bu.k0; k < bu.k1; ++k)
-    for (int i = bu.i0; i < bu.i1; ++i) {
-      if (i <= 0 || i >= spec.nx || k < 0 || k >= spec.nz || E.E_x(i, k) > 0.0) continue;
-      bool any = false;
-      const int body = covering(i - 1, k, i, k, any);
-      if (!any) continue;
-      u(i, k) = rigid(body, spec.position(Stagger::FaceX, i, k)).x;
-      u_valid(i, k) = 1;
-    }
-  const auto bw = w.storage();
-  for (int k = bw.k0; k < bw.k1; ++k)
-    for (int i = bw.i0; i < bw.i1; ++i) {
-      if (k <= 0 || k >= spec.nz || i < 0 || i >= spec.nx || E.E_z(i, k) > 0.0) continue;
-      bool any = false;
-      const int body = covering(i, k - 1, i, k, any);
-      if (!any) continue;
-      w(i, k) = rigid(body, spec.position(Stagger::FaceZ, i, k)).z;
-      w_valid(i, k) = 1;
-    }
+  for (const Axis a : grid::kAxes) {
+    grid::FaceField& vel = along(a, u, w);
+    grid::GridArray<signed char>& valid = along(a, u_valid, w_valid);
+    const grid::FaceField& aperture = along(a, E.E_x, E.E_z);
+    // the face (i, k) normal to a lies between the cells (i - di, k - dk) and (i, k)
+    const int di = grid::step_i(a), dk = grid::step_k(a);
+    const auto b = vel.storage();
+    for (int k = b.k0; k < b.k1; ++k)
+      for (int i = b.i0; i < b.i1; ++i) {
+        if (i - di < 0 || i >= spec.nx || k - dk < 0 || k >= spec.nz || aperture(i, k) > 0.0)
+          continue;
+        bool any = false;
+        const int body = covering(i - di, k - dk, i, k, any);
+        if (!any) continue;
+        vel(i, k) = component(rigid(body, spec.position(face_stagger(a), i, k)), a);
+        valid(i, k) = 1;
+      }
+  }
 }
 
 void extend_around_fluid(const std::vector<core::SolidState>& motions,
@@ -168,13 +175,19 @@ void extend_around_fluid(const std::vector<core::SolidState>& motions,
 }
 
 void rigid_faces_into_flip_base(const grid::GridSpec& spec, FluidState& f) {
-  const auto bu = f.u.storage(), bw = f.w.storage();
-  for (int k = bu.k0; k < bu.k1; ++k)
-    for (int i = bu.i0; i < bu.i1; ++i)
-      if (i > 0 && i < spec.nx && f.apertures.E_x(i, k) <= 0.0) f.u_old(i, k) = f.u(i, k);
-  for (int k = bw.k0; k < bw.k1; ++k)
-    for (int i = bw.i0; i < bw.i1; ++i)
-      if (k > 0 && k < spec.nz && f.apertures.E_z(i, k) <= 0.0) f.w_old(i, k) = f.w(i, k);
+  for (const Axis a : grid::kAxes) {
+    const grid::FaceField& vel = along(a, f.u, f.w);
+    grid::FaceField& old = along(a, f.u_old, f.w_old);
+    const grid::FaceField& aperture = along(a, f.apertures.E_x, f.apertures.E_z);
+    // faces inside the tank along a (the walls' faces keep their base)
+    const int n = a == Axis::X ? spec.nx : spec.nz;
+    const auto b = vel.storage();
+    for (int k = b.k0; k < b.k1; ++k)
+      for (int i = b.i0; i < b.i1; ++i) {
+        const int j = a == Axis::X ? i : k;
+        if (j > 0 && j < n && aperture(i, k) <= 0.0) old(i, k) = vel(i, k);
+      }
+  }
 }
 
 CellStates reseed_cells(const CellStates& cells, const geometry::CutCells& cut) {

@@ -6,6 +6,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "picdem/grid/axis.hpp"
+
 namespace picdem::fluid {
 
 using grid::CellState;
@@ -54,13 +56,14 @@ double FluidState::max_grid_speed() const {
   grid::GridArray<signed char> vu(*d_, Stagger::FaceX, 0), vw(*d_, Stagger::FaceZ, 0);
   fluid_faces(cells, apertures, vu, vw);
   double m = 0.0;
-  const auto bu = d_->owned(Stagger::FaceX), bw = d_->owned(Stagger::FaceZ);
-  for (int k = bu.k0; k < bu.k1; ++k)
-    for (int i = bu.i0; i < bu.i1; ++i)
-      if (vu(i, k)) m = std::max(m, std::abs(u(i, k)));
-  for (int k = bw.k0; k < bw.k1; ++k)
-    for (int i = bw.i0; i < bw.i1; ++i)
-      if (vw(i, k)) m = std::max(m, std::abs(w(i, k)));
+  for (const grid::Axis a : grid::kAxes) {
+    const grid::FaceField& vel = grid::along(a, u, w);
+    const grid::GridArray<signed char>& valid = grid::along(a, vu, vw);
+    const auto b = d_->owned(grid::face_stagger(a));
+    for (int k = b.k0; k < b.k1; ++k)
+      for (int i = b.i0; i < b.i1; ++i)
+        if (valid(i, k)) m = std::max(m, std::abs(vel(i, k)));
+  }
   return d_->comm().max(m);
 }
 
