@@ -136,8 +136,8 @@ EOF
   ;;
 layout)
   # The same 2 ranks in another layout (2 x 1 blocks -> 1 x 2): the checkpoint is read as on
-  # another rank count, never slice by slice. A dam break without solids (solids crossing rank
-  # boundaries stop the run today, doc/restart.md).
+  # another rank count, never slice by slice. A dam break without solids (the N -> M restarts with
+  # solids across rank boundaries are ranks_straddling's).
   dam=(cases/dam_break/case.yaml --set grid/cell_size=0.004 --set output/png=false
        --set checkpoint/every_steps=20 --set checkpoint/keep=5)
   run 2 "$W/A" "${dam[@]}" --set grid/ranks_x=2 --set grid/ranks_z=1 --max-steps 40
