@@ -5,6 +5,7 @@
 
 #include "picdem/core/error.hpp"
 #include "picdem/fluid/pressure_solver.hpp"
+#include "picdem/fluid/viscous_settings.hpp"
 #include "solid_placement.hpp"
 
 namespace picdem::driver {
@@ -138,7 +139,8 @@ the value and what is allowed, when:
   of the median solid size (O(N)): 100,014 cylinders are checked in about 0.1 s;
 - water regions reach outside the tank or are empty;
 - `solver/Belos`, `solver/MueLu` (and the lists merged from `solver/MueLu_solids`,
-  `solver/MueLu_one_level`) hold a key or a type that Trilinos' own validators reject, or a
+  `solver/MueLu_one_level`), or the implicit viscous solve's `viscous_solver/Belos`,
+  `viscous_solver/MueLu`, hold a key or a type that Trilinos' own validators reject, or a
   `smoother: type` Ifpack2 does not provide; the keys of the sublists `smoother: params`,
   `smoother: pre params`, `smoother: post params` and `coarse: params` are given, as MueLu would
   give them, to the Ifpack2 smoother of that type built on a 4-row matrix (or, for a direct coarse
@@ -163,6 +165,11 @@ void check_case(const core::Comm& comm, const core::Params& params) {
   std::vector<std::string> errors;
   try {
     fluid::check_solver_settings(params);
+  } catch (const core::InputError& e) {
+    errors.push_back(e.what());
+  }
+  try {
+    fluid::viscous_solver_settings_from(params);  // checks the viscous_solver/ lists
   } catch (const core::InputError& e) {
     errors.push_back(e.what());
   }

@@ -181,6 +181,7 @@ void declare_parameters(core::ParamSchema& schema) {
   schema.passthrough("solver/MueLu_density", "\"multigrid algorithm\": sa\n",
                      "merged over solver/MueLu for the density correction's solve "
                      "(doc/coupling.md)");
+  declare_viscous_solver_parameters(schema);
   declare_open_parameters(schema);
 }
 
@@ -202,6 +203,7 @@ FluidConfig config_from(const core::Params& params) {
   c.viscous_pressure_predictor = params.boolean("fluid/viscous_pressure_predictor");
   c.viscous_cut_mass = params.boolean("fluid/viscous_cut_mass");
   c.viscous_rotation_rows = params.boolean("fluid/viscous_rotation_rows");
+  c.viscous_solver = viscous_solver_settings_from(params);
   c.h = params.real("grid/cell_size");
   c.open = open_boundaries_from(params, grid::spec_from(params));
   if (params.has("obstacles"))

@@ -91,27 +91,7 @@ void validate(const SolverSettings& s) {
       {"solver/MueLu_solids", merged(s.muelu, &s.muelu_solids)},
       {"solver/MueLu_one_level", merged(s.muelu, &s.muelu_one_level)},
       {"solver/MueLu_density", s.muelu}};
-  for (const auto& [key, list] : lists) {
-    Teuchos::ParameterList top = list;
-    std::vector<std::string> levels;  // MueLu's "level N" sublists: not in the master list
-    for (auto it = top.begin(); it != top.end(); ++it)
-      if (top.name(it).rfind("level ", 0) == 0) levels.push_back(top.name(it));
-    for (const auto& l : levels) top.remove(l);
-    try {
-      top.validateParameters(*MueLu::MasterList::List(), 0);
-    } catch (const std::exception& e) {
-      throw core::InputError(std::string(key) + ": MueLu rejected the settings: " + e.what());
-    }
-    // The smoother is built by Ifpack2 only when the hierarchy is: its name checked now.
-    for (const char* k : {"smoother: type", "smoother: pre type", "smoother: post type"})
-      if (top.isType<std::string>(k) &&
-          !Ifpack2::Factory::isSupported<Tpetra::CrsMatrix<>>(top.get<std::string>(k)))
-        throw core::InputError(std::string("key '") + key + "/" + k + "' = '" +
-                               top.get<std::string>(k) +
-                               "' is not allowed: Ifpack2 provides no such smoother (e.g. "
-                               "CHEBYSHEV, RELAXATION, ILUT, RILUK, SCHWARZ)");
-    detail::check_muelu_sublists(key, top);
-  }
+  for (const auto& [key, list] : lists) detail::check_muelu_list(key, list);
   try {
     Belos::PseudoBlockCGSolMgr<double, MV, OP> cg;
     s.belos.validateParameters(*cg.getValidParameters(), 0);

@@ -4,6 +4,7 @@
 
 #include <Ifpack2_Factory.hpp>
 #include <MueLu_DirectSolver.hpp>
+#include <MueLu_MasterList.hpp>
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 
@@ -197,10 +198,31 @@ void check_muelu_sublists(const std::string& key, const Teuchos::ParameterList& 
   try {
     check_lists(key, given);
   } catch (const core::InputError& e) {
-    if (key == "solver/MueLu") throw;
+    if (key.rfind("solver/MueLu_", 0) != 0) throw;  // a list of its own: not a merged one
     throw core::InputError(std::string(e.what()) + "\n(" + key + " stands for solver/MueLu with " +
                            key + " merged over it: the key may come from either)");
   }
+}
+
+void check_muelu_list(const std::string& key, const Teuchos::ParameterList& muelu) {
+  Teuchos::ParameterList top = muelu;
+  std::vector<std::string> levels;  // MueLu's "level N" sublists: not in the master list
+  for (auto it = top.begin(); it != top.end(); ++it)
+    if (top.name(it).rfind("level ", 0) == 0) levels.push_back(top.name(it));
+  for (const auto& l : levels) top.remove(l);
+  try {
+    top.validateParameters(*MueLu::MasterList::List(), 0);
+  } catch (const std::exception& e) {
+    throw core::InputError(key + ": MueLu rejected the settings: " + e.what());
+  }
+  // The smoother is built by Ifpack2 only when the hierarchy is: its name checked now.
+  for (const char* k : {"smoother: type", "smoother: pre type", "smoother: post type"})
+    if (top.isType<std::string>(k) &&
+        !Ifpack2::Factory::isSupported<Matrix>(top.get<std::string>(k)))
+      throw core::InputError("key '" + key + "/" + k + "' = '" + top.get<std::string>(k) +
+                             "' is not allowed: Ifpack2 provides no such smoother (e.g. "
+                             "CHEBYSHEV, RELAXATION, ILUT, RILUK, SCHWARZ)");
+  check_muelu_sublists(key, top);
 }
 
 }  // namespace picdem::fluid::detail

@@ -18,4 +18,10 @@ namespace picdem::fluid::detail {
 /// core::InputError "key 'KEY/SUBLIST/NAME' = VALUE is not allowed: WHY".
 void check_muelu_sublists(const std::string& key, const Teuchos::ParameterList& muelu);
 
+/// Checks a whole MueLu list `muelu` as handed to MueLu (`key` names it in messages): its top
+/// level against MueLu's master list (the "level N" sublists are not checked), the smoother types
+/// against Ifpack2's factory (the smoother is built only when the first hierarchy is), then the
+/// smoother and coarse sublists (check_muelu_sublists). Throws core::InputError naming the key.
+void check_muelu_list(const std::string& key, const Teuchos::ParameterList& muelu);
+
 }  // namespace picdem::fluid::detail

@@ -74,7 +74,7 @@ std::vector<ViscousBody> unit_motion(const std::vector<ViscousBody>& bodies, std
 ViscousLoads solve_viscous_rigid_rows(const ViscousStencil& su, const ViscousStencil& sw, double nu,
                                       double rho, double dt, std::vector<double>& u,
                                       std::vector<double>& w, std::vector<ViscousBody>& bodies,
-                                      int& iterations) {
+                                      int& iterations, const ViscousSolverSettings& solver) {
   const double mu = rho * nu;
   std::vector<std::size_t> free;
   for (std::size_t b = 0; b < bodies.size(); ++b)
@@ -82,8 +82,8 @@ ViscousLoads solve_viscous_rigid_rows(const ViscousStencil& su, const ViscousSte
   const std::size_t n = 3 * free.size();
   const std::vector<double> zero_u(u.size(), 0.0), zero_w(w.size(), 0.0);
   // u_0, w_0: the bodies at s^n
-  iterations += solve_viscous_implicit(su, nu, dt, zero_u, u);
-  iterations += solve_viscous_implicit(sw, nu, dt, zero_w, w);
+  iterations += solve_viscous_implicit(su, nu, dt, zero_u, u, solver);
+  iterations += solve_viscous_implicit(sw, nu, dt, zero_w, w, solver);
   const ViscousLoads base = viscous_loads(su, sw, u, w, mu, bodies);
   std::vector<double> K(n * n, 0.0), rhs(n, 0.0);
   std::vector<std::vector<double>> gu(n), gw(n);
@@ -99,8 +99,8 @@ ViscousLoads solve_viscous_rigid_rows(const ViscousStencil& su, const ViscousSte
       set_leg_values(eu, unit);
       set_leg_values(ew, unit);
       gu[col] = zero_u, gw[col] = zero_w;  // u_old = 0: the answer to the legs' values alone
-      if (j != 1) iterations += solve_viscous_implicit(eu, nu, dt, zero_u, gu[col]);
-      if (j != 0) iterations += solve_viscous_implicit(ew, nu, dt, zero_w, gw[col]);
+      if (j != 1) iterations += solve_viscous_implicit(eu, nu, dt, zero_u, gu[col], solver);
+      if (j != 0) iterations += solve_viscous_implicit(ew, nu, dt, zero_w, gw[col], solver);
       const ViscousLoads l = viscous_loads(eu, ew, gu[col], gw[col], mu, unit);
       for (std::size_t g = 0; g < free.size(); ++g) {
         const std::size_t b = free[g];

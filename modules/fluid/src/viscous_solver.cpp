@@ -8,7 +8,9 @@
 //       + (1 - beta) h^2 (L u_old)_P,
 // a symmetric positive definite matrix (an M-matrix, strictly diagonally dominant on rows with a
 // boundary leg or alpha > 0), solved with Belos CG preconditioned with MueLu (smoothed
-// aggregation, its defaults). One of the few files that include Tpetra, Belos and MueLu.
+// aggregation), both given the viscous_solver/ lists of the case (declared here, with their
+// defaults, and checked by Trilinos' validators). One of the few files that include Tpetra,
+// Belos and MueLu.
 #include <BelosLinearProblem.hpp>
 #include <BelosPseudoBlockCGSolMgr.hpp>
 #include <BelosTpetraAdapter.hpp>
@@ -23,8 +25,55 @@
 
 #include "picdem/core/error.hpp"
 #include "picdem/fluid/viscous.hpp"
+#include "solver_sublists.hpp"
 
 namespace picdem::fluid {
+
+// Belos' own defaults for PseudoBlockCG (BelosPseudoBlockCGSolMgr.hpp), stated; MueLu's, silenced.
+const char* const kViscousBelosDefaults =
+    "\"Implicit Residual Scaling\": \"Norm of Initial Residual\"\n"
+    "Verbosity: 0\n";
+const char* const kViscousMueLuDefaults = "verbosity: none\n";
+
+void declare_viscous_solver_parameters(core::ParamSchema& schema) {
+  schema.section("viscous_solver",
+                 "The implicit viscous solve (fluid/viscosity_scheme implicit or crank_nicolson): "
+                 "Belos CG preconditioned by MueLu, one solve per velocity component.");
+  schema
+      .real("viscous_solver/tolerance", kViscousTolerance,
+            "relative true residual ||b - A u|| / ||b|| to reach")
+      .positive()
+      .less_than(1.0);
+  schema
+      .integer("viscous_solver/max_iterations", kViscousMaxIterations,
+               "CG iterations allowed per solve")
+      .at_least(1);
+  schema.passthrough("viscous_solver/Belos", kViscousBelosDefaults,
+                     "settings handed to Belos::PseudoBlockCGSolMgr (tolerance and iteration limit "
+                     "come from viscous_solver/tolerance and viscous_solver/max_iterations)");
+  schema.passthrough("viscous_solver/MueLu", kViscousMueLuDefaults,
+                     "settings handed to MueLu::CreateTpetraPreconditioner (no coordinates: "
+                     "MueLu's defaults otherwise, smoothed aggregation)");
+}
+
+ViscousSolverSettings viscous_solver_settings_from(const core::Params& params) {
+  ViscousSolverSettings s;
+  s.tolerance = params.real("viscous_solver/tolerance");
+  s.max_iterations = static_cast<int>(params.integer("viscous_solver/max_iterations"));
+  auto belos = std::make_shared<Teuchos::ParameterList>(params.teuchos("viscous_solver/Belos"));
+  auto muelu = std::make_shared<Teuchos::ParameterList>(params.teuchos("viscous_solver/MueLu"));
+  detail::check_muelu_list("viscous_solver/MueLu", *muelu);
+  try {
+    Belos::PseudoBlockCGSolMgr<double, Tpetra::MultiVector<>, Tpetra::Operator<>> cg;
+    belos->validateParameters(*cg.getValidParameters(), 0);
+  } catch (const std::exception& e) {
+    throw core::InputError(std::string("viscous_solver/Belos: Belos rejected the settings: ") +
+                           e.what());
+  }
+  s.belos = std::move(belos);
+  s.muelu = std::move(muelu);
+  return s;
+}
 
 namespace {
 
@@ -61,6 +110,13 @@ RCP<Matrix> assemble(const ViscousStencil& s, double alpha, double beta,
   return A;
 }
 
+/// The declared default of viscous_solver/Belos (`belos`) or viscous_solver/MueLu, read once.
+const Teuchos::ParameterList& declared_default(bool belos) {
+  static const auto b = core::parse_yaml(kViscousBelosDefaults, "default of viscous_solver/Belos");
+  static const auto m = core::parse_yaml(kViscousMueLuDefaults, "default of viscous_solver/MueLu");
+  return belos ? *b : *m;
+}
+
 double true_residual(const Matrix& A, const MV& X, const MV& B) {
   MV R(A.getRangeMap(), 1);
   A.apply(X, R);
@@ -76,6 +132,14 @@ double true_residual(const Matrix& A, const MV& X, const MV& B) {
 int solve_viscous_implicit(const ViscousStencil& s, double nu, double dt,
                            const std::vector<double>& f, std::vector<double>& u, double tolerance,
                            double beta) {
+  ViscousSolverSettings solver;
+  solver.tolerance = tolerance;
+  return solve_viscous_implicit(s, nu, dt, f, u, solver, beta);
+}
+
+int solve_viscous_implicit(const ViscousStencil& s, double nu, double dt,
+                           const std::vector<double>& f, std::vector<double>& u,
+                           const ViscousSolverSettings& solver, double beta) {
   if (!Tpetra::isInitialized())
     throw core::SolverError(
         "the implicit viscous solve needs Tpetra initialised: create a fluid::LinearAlgebraScope");
@@ -106,30 +170,31 @@ int solve_viscous_implicit(const ViscousStencil& s, double nu, double dt,
     for (const ViscousLeg& leg : s.legs)
       b(static_cast<std::size_t>(leg.unknown), 0) += beta * leg.weight * leg.value;
   }
-  Teuchos::ParameterList muelu;
-  muelu.set("verbosity", "none");
+  Teuchos::ParameterList muelu = solver.muelu ? *solver.muelu : declared_default(false);
   RCP<OP> prec = MueLu::CreateTpetraPreconditioner(RCP<OP>(A), muelu);
   auto problem = rcp(new Belos::LinearProblem<double, MV, OP>(A, X, B));
   problem->setLeftPrec(prec);
   problem->setProblem();
-  auto belos = rcp(new Teuchos::ParameterList());
-  belos->set("Convergence Tolerance", tolerance);
-  belos->set("Maximum Iterations", 1000);
-  Belos::PseudoBlockCGSolMgr<double, MV, OP> solver(problem, belos);
+  auto belos =
+      rcp(new Teuchos::ParameterList(solver.belos ? *solver.belos : declared_default(true)));
+  belos->set("Convergence Tolerance", solver.tolerance);
+  belos->set("Maximum Iterations", solver.max_iterations);
+  Belos::PseudoBlockCGSolMgr<double, MV, OP> cg(problem, belos);
   int iterations = 0;
   double res = 0.0;
   for (int attempt = 0; attempt < 2; ++attempt) {
-    solver.solve();
-    iterations += solver.getNumIters();
+    cg.solve();
+    iterations += cg.getNumIters();
     res = true_residual(*A, *X, *B);
-    if (res <= tolerance) break;
+    if (res <= solver.tolerance) break;
     problem->setProblem();
-    solver.reset(Belos::Problem);
+    cg.reset(Belos::Problem);
   }
-  if (!(res <= tolerance)) {
+  if (!(res <= solver.tolerance)) {
     std::ostringstream msg;
     msg << "implicit viscous solve did not converge: relative true residual " << res << " after "
-        << iterations << " iterations";
+        << iterations << " iterations, viscous_solver/tolerance = " << solver.tolerance
+        << " (viscous_solver/max_iterations = " << solver.max_iterations << ")";
     throw core::SolverError(msg.str());
   }
   auto x = X->getLocalViewHost(Tpetra::Access::ReadOnly);

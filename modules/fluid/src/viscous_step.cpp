@@ -113,14 +113,14 @@ ViscousStepResult apply_viscosity_implicit(grid::FaceField& u, grid::FaceField& 
   std::vector<ViscousBody> solved = bodies;
   if (rigid_rows) {
     if (beta != 1.0) throw core::InputError("viscous rigid rows need backward Euler (beta = 1)");
-    result.loads =
-        solve_viscous_rigid_rows(su, sw, cfg.nu, cfg.rho, dt, ug, wg, solved, result.iterations);
+    result.loads = solve_viscous_rigid_rows(su, sw, cfg.nu, cfg.rho, dt, ug, wg, solved,
+                                            result.iterations, cfg.viscous_solver);
   } else {
     const std::vector<double> u_old = ug, w_old = wg;
     result.iterations += solve_viscous_implicit(su, cfg.nu, dt, std::vector<double>(ug.size(), 0.0),
-                                                ug, 1e-12, beta);
+                                                ug, cfg.viscous_solver, beta);
     result.iterations += solve_viscous_implicit(sw, cfg.nu, dt, std::vector<double>(wg.size(), 0.0),
-                                                wg, 1e-12, beta);
+                                                wg, cfg.viscous_solver, beta);
     std::vector<double> ub(ug.size()), wb(wg.size());
     for (std::size_t n = 0; n < ug.size(); ++n) ub[n] = beta * ug[n] + (1.0 - beta) * u_old[n];
     for (std::size_t n = 0; n < wg.size(); ++n) wb[n] = beta * wg[n] + (1.0 - beta) * w_old[n];

@@ -18,14 +18,15 @@
 #include "picdem/core/params.hpp"
 #include "picdem/core/vec2.hpp"
 #include "picdem/fluid/open_boundary.hpp"
+#include "picdem/fluid/viscous_settings.hpp"
 #include "picdem/grid/field.hpp"
 #include "picdem/grid/grid.hpp"
 
 namespace picdem::fluid {
 
 /// Declares fluid/density, fluid/viscosity, fluid/gravity, fluid/walls, fluid/wall_left,
-/// fluid/wall_right, fluid/wall_bottom, fluid/wall_top, fluid/viscosity_scheme, the solver/ keys
-/// and the open/ keys (open_boundary.hpp).
+/// fluid/wall_right, fluid/wall_bottom, fluid/wall_top, fluid/viscosity_scheme, the solver/ keys,
+/// the viscous_solver/ keys (viscous_settings.hpp) and the open/ keys (open_boundary.hpp).
 void declare_parameters(core::ParamSchema& schema);
 /// Declares free_surface/method, free_surface/theta_min, free_surface/density_correction and
 /// free_surface/density_correction_interval (src/parameters.cpp).
@@ -53,6 +54,8 @@ struct FluidConfig {
   /// fluid/viscous_rotation_rows: without coupling/viscous_rigid_rows, each solid's omega is an
   /// unknown of the implicit viscous step (its translation stays split; doc/viscous.md)
   bool viscous_rotation_rows = false;
+  /// viscous_solver/ keys: the implicit viscous solve's Belos and MueLu settings
+  ViscousSolverSettings viscous_solver;
   double h = 0.0;       ///< cell size [m] (grid/cell_size)
   OpenBoundaries open;  ///< open/ keys: inflow and outflow sides (open_boundary.hpp)
   /// Per obstacle, in the case's order: obstacles/<name>/wall is free_slip (implicit viscosity,

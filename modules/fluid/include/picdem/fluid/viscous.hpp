@@ -138,9 +138,15 @@ std::vector<double> apply_viscous_operator(const ViscousStencil& s, const std::v
 /// Belos CG preconditioned with MueLu (the matrix is symmetric positive definite) to the relative
 /// true residual `tolerance`; throws core::SolverError if it is not reached. Returns iterations.
 /// The loads of the step are viscous_loads of beta u_new + (1 - beta) u_old (they are linear in u).
+/// Belos and MueLu get the declared defaults of viscous_solver/Belos and viscous_solver/MueLu.
 int solve_viscous_implicit(const ViscousStencil& s, double nu, double dt,
                            const std::vector<double>& f, std::vector<double>& u,
-                           double tolerance = 1e-12, double beta = 1.0);
+                           double tolerance = kViscousTolerance, double beta = 1.0);
+/// The same with the case's viscous_solver/ settings (tolerance, iteration limit, Belos and MueLu
+/// lists; viscous_settings.hpp).
+int solve_viscous_implicit(const ViscousStencil& s, double nu, double dt,
+                           const std::vector<double>& f, std::vector<double>& u,
+                           const ViscousSolverSettings& solver, double beta = 1.0);
 
 /// Viscous force [N/m] and torque [N m/m] on each body (about its centre) and the force on the
 /// tank walls, from the boundary legs: the fluid at a leg gains mu weight (value - u) per unit
@@ -193,11 +199,12 @@ void viscous_pressure_predictor(grid::FaceField& du, grid::FaceField& dw, const 
 /// viscous load of body b from the same legs (viscous_loads). Solved by superposition: the fluid
 /// solve with the bodies at s^n plus, per free body, its answers to unit rigid velocities (2 more
 /// solves per component and body), then a dense 3 x 3 per body system. The bodies' velocities are
-/// set to s on return; returns the loads at (u_new, s) and adds the CG iterations.
+/// set to s on return; returns the loads at (u_new, s) and adds the CG iterations. Each solve
+/// with `solver` (viscous_solver/ keys).
 ViscousLoads solve_viscous_rigid_rows(const ViscousStencil& su, const ViscousStencil& sw, double nu,
                                       double rho, double dt, std::vector<double>& u,
                                       std::vector<double>& w, std::vector<ViscousBody>& bodies,
-                                      int& iterations);
+                                      int& iterations, const ViscousSolverSettings& solver = {});
 
 /// Stability limit of explicit viscosity on a uniform grid: dt <= h^2 / (4 nu) (infinity for
 /// nu = 0).
