@@ -150,7 +150,7 @@ void check_step(const coupling::Diagnostics& g, double h, bool has_fluid, bool g
       << " s: " << (grid_speed ? "the grid velocity moved a particle " : "a particle moved ")
       << moved / h << " cells in one step (speed " << moved / g.dt << " m/s, dt " << g.dt
       << " s); more than 2 cells means the CFL condition is far exceeded: the run has "
-      << "blown up";
+      << "blown up (the step is bounded by time/cfl and time/dt_max)";
     throw core::SolverError(m.str());
   }
   if (!dem) return;
