@@ -436,13 +436,26 @@ void TpetraSystem::fill_values(const RowContributions& rows) {
     for (std::size_t j = 0; j < a_values_.size(); ++j) a_values_[j] = got[a_from_[j]];
     vals = a_values_.data();
   }
-  if (A_->isFillComplete()) A_->resumeFill();
-  for (std::size_t r = 0; r + 1 < static_cast<std::size_t>(ptr.size()); ++r) {
-    const std::size_t b = ptr[r], n = ptr[r + 1] - b;
-    A_->replaceLocalValues(static_cast<LO>(r), idx.view(b, n),
-                           Teuchos::ArrayView<const double>(vals + b, n));
+  // A's graph is static and its rows are packed in the order of ptr/idx (the CSR arrays it was
+  // built from), so the values go straight into its local values: no resumeFill, per-row
+  // replaceLocalValues and fillComplete at every solve (the same values, so the same bits).
+  // Checked once per structure, at its first fill.
+  if (!A_->isFillComplete()) {
+    A_->fillComplete(solve_map_, solve_map_);
+    const auto g = A_->getCrsGraph()->getLocalGraphHost();
+    bool same = g.row_map.extent(0) == static_cast<std::size_t>(ptr.size()) &&
+                g.entries.extent(0) == static_cast<std::size_t>(idx.size());
+    for (std::size_t r = 0; same && r < static_cast<std::size_t>(ptr.size()); ++r)
+      same = static_cast<std::size_t>(g.row_map(r)) == ptr[r];
+    for (std::size_t j = 0; same && j < static_cast<std::size_t>(idx.size()); ++j)
+      same = g.entries(j) == idx[j];
+    int all_same = same ? 1 : 0, local = all_same;  // every rank throws, or none
+    Teuchos::reduceAll(*tcomm_, Teuchos::REDUCE_MIN, local, Teuchos::outArg(all_same));
+    if (!all_same)
+      throw core::SolverError("pressure matrix: Tpetra's local graph is not the kept CSR arrays");
   }
-  A_->fillComplete(solve_map_, solve_map_);
+  const auto v = A_->getLocalValuesView();
+  for (std::size_t j = 0; j < static_cast<std::size_t>(v.extent(0)); ++j) v(j) = vals[j];
 }
 
 void TpetraSystem::fill_vectors(const RowContributions& rows, const std::vector<double>& x0) {
