@@ -24,12 +24,14 @@
 // dropped (zero gradient at the midpoint). Not seen by this version: a body thinner than h
 // between two fluid nodes (the leg does not test the segment between them).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <unordered_map>
 
 #include "picdem/core/error.hpp"
 #include "picdem/fluid/viscous.hpp"
+#include "tent.hpp"
 
 namespace picdem::fluid {
 
@@ -202,6 +204,10 @@ void set_cut_node_masses(ViscousStencil& s, const ViscousGrid& g,
     const Vec2 x = first + Vec2{(X + 0.5) * step * g.h, (Z + 0.5) * step * g.h};
     return fluid_at[key] = !any_inside(x, bodies);
   };
+  // The tent's share (per axis) of each sample's stretch [a step - 1, (a + 1) step - 1].
+  std::array<double, 2 * kPerCell> share;
+  for (int a = 0; a < 2 * kPerCell; ++a)
+    share[static_cast<std::size_t>(a)] = detail::tent_share(a * step - 1.0, (a + 1) * step - 1.0);
   s.mass.assign(s.node_of.size(), 1.0);
   for (std::size_t r = 0; r < s.node_of.size(); ++r) {
     const int n = s.node_of[r], i = n % s.ni, k = n / s.ni;
@@ -219,15 +225,11 @@ void set_cut_node_masses(ViscousStencil& s, const ViscousGrid& g,
     if (!near) continue;
     // m = integral of the tent (1 - |x| / h)(1 - |z| / h) over the fluid, / h^2
     double m = 0.0;
-    for (int a = 0; a < 2 * kPerCell; ++a) {
-      const double x = (a + 0.5) * step - 1.0;
-      for (int c = 0; c < 2 * kPerCell; ++c) {
-        const double z = (c + 0.5) * step - 1.0;
+    for (int a = 0; a < 2 * kPerCell; ++a)
+      for (int c = 0; c < 2 * kPerCell; ++c)
         if (fluid_sample(static_cast<long long>(i - 1) * kPerCell + a,
                          static_cast<long long>(k - 1) * kPerCell + c))
-          m += (1.0 - std::abs(x)) * (1.0 - std::abs(z)) * step * step;
-      }
-    }
+          m += share[static_cast<std::size_t>(a)] * share[static_cast<std::size_t>(c)];
     s.mass[r] = m;
   }
 }
