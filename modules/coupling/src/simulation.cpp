@@ -111,15 +111,10 @@ Simulation::Simulation(core::Comm comm, core::Params params) : m_(std::make_uniq
 
   m.obstacles = geometry::obstacles_from(params);
   const auto solids = dem::solids_from(params);
-  if (!solids.empty() || !m.set.has_fluid) {
-    const core::Box2 tank{spec.origin, spec.origin + Vec2{spec.length(), spec.height()}};
-    std::vector<std::vector<Vec2>> polys;
-    for (const auto& o : m.obstacles)
-      for (const auto& poly : o.polygons) polys.push_back(poly);
-    m.dem = std::make_unique<dem::DemSolver>(comm, dem::config_from(params, spec.h),
-                                             grid::owned_regions(d), tank, polys);
-    m.dem->add_solids(solids);
-  }
+  const core::Box2 tank{spec.origin, spec.origin + Vec2{spec.length(), spec.height()}};
+  if (!solids.empty() || !m.set.has_fluid)
+    m.dem =
+        dem::solver_from(params, comm, spec.h, tank, grid::owned_regions(d), m.obstacles, solids);
   m.set.has_solids = m.dem != nullptr;
   m.set.has_bodies = m.dem || !m.obstacles.empty();
 

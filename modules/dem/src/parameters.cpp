@@ -2,9 +2,12 @@
 
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 #include "picdem/core/error.hpp"
 #include "picdem/dem/contact_law_registry.hpp"
+#include "picdem/dem/dem_solver.hpp"
+#include "picdem/geometry/obstacles.hpp"
 #include "picdem/geometry/shape_registry.hpp"
 
 namespace picdem::dem {
@@ -126,6 +129,19 @@ std::vector<SolidSpec> solids_from(const core::Params& params) {
   }
   for (std::size_t n = 0; n < out.size(); ++n) out[n].state.id = static_cast<std::int64_t>(n);
   return out;
+}
+
+std::unique_ptr<DemSolver> solver_from(const core::Params& params, core::Comm comm, double h,
+                                       const core::Box2& tank, std::vector<core::Box2> regions,
+                                       const std::vector<geometry::Obstacle>& obstacles,
+                                       const std::vector<SolidSpec>& solids) {
+  std::vector<std::vector<core::Vec2>> polygons;
+  for (const auto& o : obstacles)
+    for (const auto& polygon : o.polygons) polygons.push_back(polygon);
+  auto dem =
+      std::make_unique<DemSolver>(comm, config_from(params, h), std::move(regions), tank, polygons);
+  dem->add_solids(solids);
+  return dem;
 }
 
 }  // namespace picdem::dem

@@ -4,12 +4,19 @@
 #include <memory>
 #include <vector>
 
+#include "picdem/core/comm.hpp"
 #include "picdem/core/params.hpp"
 #include "picdem/core/solid_state.hpp"
 #include "picdem/core/vec2.hpp"
 #include "picdem/geometry/shape.hpp"
 
+namespace picdem::geometry {
+struct Obstacle;
+}
+
 namespace picdem::dem {
+
+class DemSolver;
 
 class ContactLaw;
 
@@ -63,5 +70,13 @@ DemConfig config_from(const core::Params& params, double h);
 /// The initial solids of a validated case, ids 0, 1, 2, ... in file order (a stack numbers its
 /// cylinders layer by layer from the bottom, each layer from the wall outwards).
 std::vector<SolidSpec> solids_from(const core::Params& params);
+
+/// The DEM of a validated case: its settings (config_from with the grid's cell size h), the
+/// tank's sides as walls, the obstacles' polygons as fixed bodies and `solids` added;
+/// regions[r]: the box of space rank r owns.
+std::unique_ptr<DemSolver> solver_from(const core::Params& params, core::Comm comm, double h,
+                                       const core::Box2& tank, std::vector<core::Box2> regions,
+                                       const std::vector<geometry::Obstacle>& obstacles,
+                                       const std::vector<SolidSpec>& solids);
 
 }  // namespace picdem::dem
