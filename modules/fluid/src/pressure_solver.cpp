@@ -18,6 +18,7 @@
 #include <chrono>
 #include <cmath>
 #include <sstream>
+#include <string>
 
 #include "coupling_term.hpp"
 #include "picdem/core/error.hpp"
@@ -170,6 +171,23 @@ RCP<OP> preconditioner(const detail::TpetraSystem& ts, const SolverSettings& set
   }
 }
 
+/// Why Belos' CG stops short on the pressure equation, with what the case can change.
+std::string singular_hint() {
+  return "the matrix may be singular, nearly so, or not positive definite. A body of water with "
+         "no free surface and no outflow boundary has no pressure level, and water entering it "
+         "through an inflow (open/<side>) has nowhere to go: give it an outflow or room above it";
+}
+
+/// The message of a Belos CG breakdown (p^T A p <= 0; Belos' last line of `what`).
+std::string breakdown_message(bool density, const std::string& what) {
+  std::string last = what;
+  while (!last.empty() && (last.back() == '\n' || last.back() == ' ')) last.pop_back();
+  const std::size_t cut = last.find_last_of('\n');
+  if (cut != std::string::npos) last = last.substr(cut + 1);
+  return std::string(density ? "density correction" : "pressure") +
+         " solve broke down (Belos: " + last + "): " + singular_hint();
+}
+
 /// Belos CG from the system's x; the implicit residual may drift from the true one, so after the
 /// solve ||b - A x|| / ||b|| is computed and the solve restarts once from the reached x if it is
 /// above the tolerance. Adds the iterations and sets the true residual in `stats`.
@@ -196,7 +214,12 @@ void run_cg(const detail::TpetraSystem& ts, const RCP<OP>& prec, const SolverSet
   belos->set("Maximum Iterations", settings.max_iterations);
   Belos::PseudoBlockCGSolMgr<double, MV, OP> solver(problem, belos);
   for (int attempt = 0; attempt < 2; ++attempt) {
-    solver.solve();
+    try {
+      solver.solve();
+    } catch (const Belos::BelosError& e) {
+      // p^T A p <= 0 is a global reduction: every rank throws here alike
+      throw core::SolverError(breakdown_message(settings.density, e.what()));
+    }
     stats.iterations += solver.getNumIters();
     stats.relative_residual = true_residual();
     if (stats.relative_residual <= settings.tolerance) break;
@@ -244,6 +267,9 @@ SolveStats solve_rows(detail::TpetraSystem& ts, const grid::Decomposition& d,
     msg << "pressure solve did not converge: relative true residual " << stats.relative_residual
         << " after " << stats.iterations << " iterations, solver/tolerance = " << settings.tolerance
         << " (solver/max_iterations = " << settings.max_iterations << ")";
+    // stopped before the iteration limit: CG broke down or its residual drifted from the true one
+    if (stats.iterations < settings.max_iterations)
+      msg << "; CG stopped short of the iteration limit: " << singular_hint();
     throw core::SolverError(msg.str());
   }
   return stats;

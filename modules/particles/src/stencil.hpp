@@ -151,7 +151,8 @@ inline void check_in_storage(const grid::FaceField& f, const Stencil& st, core::
   std::ostringstream m;
   m << "particle at (" << p.x << ", " << p.z << ") is beyond this rank's halo of "
     << "face indices [" << b.i0 << ", " << b.i1 << ") x [" << b.k0 << ", " << b.k1
-    << "): it moved more than the halo allows in one step (reduce the time step: |v| dt <= 2 h)";
+    << "): it moved more than the halo allows in one step (reduce the time step: |v| dt <= 2 h; "
+       "the step is bounded by time/cfl and time/dt_max)";
   throw core::SolverError(m.str());
 }
 
