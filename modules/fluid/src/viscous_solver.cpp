@@ -173,7 +173,9 @@ int solve_viscous_implicit(const ViscousStencil& s, double nu, double dt,
   Teuchos::ParameterList muelu = solver.muelu ? *solver.muelu : declared_default(false);
   RCP<OP> prec = MueLu::CreateTpetraPreconditioner(RCP<OP>(A), muelu);
   auto problem = rcp(new Belos::LinearProblem<double, MV, OP>(A, X, B));
-  problem->setLeftPrec(prec);
+  // Given as the right preconditioner, as the pressure solve does: Belos' CG applies it to the
+  // residual either way, but with a left one setProblem also applied it to the initial residual.
+  problem->setRightPrec(prec);
   problem->setProblem();
   auto belos =
       rcp(new Teuchos::ParameterList(solver.belos ? *solver.belos : declared_default(true)));
