@@ -11,9 +11,11 @@
 #include "picdem/core/timer.hpp"
 #include "picdem/fluid/fluid.hpp"
 #include "picdem/fluid/open_flow.hpp"
+#include "picdem/grid/axis.hpp"
 
 namespace picdem::fluid {
 
+using grid::Axis;
 using grid::CellState;
 using grid::FaceField;
 using grid::Stagger;
@@ -61,6 +63,12 @@ class FluidSpans {
     return {std::max(faces.i0, lo), std::max(std::max(faces.i0, lo), std::min(faces.i1, hi))};
   }
 
+  /// x_faces for Axis::X, z_faces for Axis::Z.
+  template <Axis A>
+  std::pair<int, int> faces(int k, const core::IndexBox& box) const {
+    return A == Axis::X ? x_faces(k, box) : z_faces(k, box);
+  }
+
  private:
   std::pair<int, int> row(int k) const {
     if (k < box_.k0 || k >= box_.k1) return {0, 0};
@@ -69,6 +77,96 @@ class FluidSpans {
   core::IndexBox box_;
   std::vector<std::pair<int, int>> spans_;
 };
+
+/// The aperture of the axis-A face (i, k): E_x or E_z.
+template <Axis A>
+double aperture(const Apertures& E, int i, int k) {
+  return A == Axis::X ? E.E_x(i, k) : E.E_z(i, k);
+}
+
+/// The body force on the axis-A velocity f of the faces with a fluid cell on either side
+/// (interior faces only: the grid's outer faces have no cell on their outer side).
+template <Axis A>
+void gravity_along(FaceField& f, const CellStates& cells, double dt, double g) {
+  constexpr int di = grid::step_i(A), dk = grid::step_k(A);
+  const auto& b = f.owned();
+  for (int k = b.k0; k < b.k1; ++k)
+    for (int i = b.i0; i < b.i1; ++i) {
+      if (!cells.in_storage(i - di, k - dk) || !cells.in_storage(i, k)) continue;
+      if (cells(i - di, k - dk) != kFluid && cells(i, k) != kFluid) continue;
+      // u~ = u + dt g_x, w~ = w + dt g_z  (eq. 2, body force)
+      f(i, k) += dt * g;
+    }
+}
+
+/// Explicit viscosity on the axis-A velocity f (f0: its values before) of the interior faces
+/// between two fluid cells; fluid(i, k) tells a fluid cell.
+template <Axis A, class IsFluid>
+void viscosity_along(FaceField& f, const FaceField& f0, double c, int nx, int nz, IsFluid fluid) {
+  constexpr int di = grid::step_i(A), dk = grid::step_k(A);
+  // A neighbour face is used when it lies on or beyond a wall (wall value or ghost) or touches
+  // fluid; otherwise (free surface) the centre value stands in: zero normal gradient.
+  auto nb = [&](int i, int k, double centre) {
+    const int n = A == Axis::X ? i : k, t = A == Axis::X ? k : i;
+    const int n_end = A == Axis::X ? nx : nz, t_end = A == Axis::X ? nz : nx;
+    if (n <= 0 || n >= n_end || t < 0 || t >= t_end) return f0(i, k);
+    return fluid(i - di, k - dk) || fluid(i, k) ? f0(i, k) : centre;
+  };
+  const auto& b = f.owned();
+  const int k0 = dk ? std::max(b.k0, 1) : b.k0, k1 = dk ? std::min(b.k1, nz) : b.k1;
+  const int i0 = di ? std::max(b.i0, 1) : b.i0, i1 = di ? std::min(b.i1, nx) : b.i1;
+  for (int k = k0; k < k1; ++k)
+    for (int i = i0; i < i1; ++i) {
+      if (!fluid(i - di, k - dk) || !fluid(i, k)) continue;
+      const double fc = f0(i, k);
+      // u += dt nu (u_E + u_W + u_N + u_S - 4 u_P) / h^2, the same for w  (eq. 2, viscous term)
+      f(i, k) += c * (nb(i + 1, k, fc) + nb(i - 1, k, fc) + nb(i, k + 1, fc) + nb(i, k - 1, fc) -
+                      4.0 * fc);
+    }
+}
+
+/// The axis-A pressure gradient on the open faces of f (neither side solid, one side fluid);
+/// theta: the free-surface fractions of those faces, or null.
+template <Axis A>
+void project_along(FaceField& f, const grid::CellField& p, const CellStates& cells,
+                   const Apertures& E, double s, const FluidSpans& spans, const FaceField* theta) {
+  constexpr int di = grid::step_i(A), dk = grid::step_k(A);
+  auto p_of = [&](int i, int k) { return cells(i, k) == kFluid ? p(i, k) : 0.0; };
+  // Ghost pressure of the air cell across a face of fraction theta: p = 0 at theta h from the
+  // fluid centre, so p_ghost = p_fluid (theta - 1) / theta.
+  auto ghost = [](double p_fluid, double th) { return p_fluid * (th - 1.0) / th; };
+  auto open = [](signed char a, signed char b) {
+    return a != kSolid && b != kSolid && (a == kFluid || b == kFluid);
+  };
+  const auto& b = f.owned();
+  for (int k = b.k0; k < b.k1; ++k) {
+    const auto [i0, i1] = spans.faces<A>(k, b);
+    for (int i = i0; i < i1; ++i) {
+      if (aperture<A>(E, i, k) <= 0.0 || !open(cells(i - di, k - dk), cells(i, k))) continue;
+      double lo = p_of(i - di, k - dk), hi = p_of(i, k);
+      if (theta && (*theta)(i, k) < 1.0) {
+        if (cells(i - di, k - dk) == kAir) lo = ghost(hi, (*theta)(i, k));
+        if (cells(i, k) == kAir) hi = ghost(lo, (*theta)(i, k));
+      }
+      // u = u~ - dt/rho (p_{i} - p_{i-1}) / h, w = w~ - dt/rho (p_{k} - p_{k-1}) / h
+      f(i, k) -= s * (hi - lo);
+    }
+  }
+}
+
+/// 1 on the axis-A faces with an aperture and a fluid cell on a side, 0 elsewhere in the band.
+template <Axis A>
+void valid_along(grid::GridArray<signed char>& valid, const CellStates& cells, const Apertures& E,
+                 const FluidSpans& spans) {
+  constexpr int di = grid::step_i(A), dk = grid::step_k(A);
+  auto fluid = [&](int i, int k) { return cells.in_storage(i, k) && cells(i, k) == kFluid; };
+  const auto& b = valid.storage();
+  for (int k = b.k0; k < b.k1; ++k) {
+    const auto [i0, i1] = spans.faces<A>(k, b);
+    for (int i = i0; i < i1; ++i)
+      valid(i, k) = aperture<A>(E, i, k) > 0.0 && (fluid(i - di, k - dk) || fluid(i, k)) ? 1 : 0;
+  }
+}
 
 }  // namespace
 
@@ -272,23 +370,8 @@ void enforce_walls(FaceField& u, FaceField& w, const FluidConfig& cfg,
 void apply_gravity(FaceField& u, FaceField& w, const CellStates& cells, double dt,
                    const FluidConfig& cfg) {
   core::ScopedTimer timer("fluid: forces");
-  // Interior faces only: the grid's outer faces have no cell on their outer side.
-  const auto& bu = u.owned();
-  for (int k = bu.k0; k < bu.k1; ++k)
-    for (int i = bu.i0; i < bu.i1; ++i) {
-      if (!cells.in_storage(i - 1, k) || !cells.in_storage(i, k)) continue;
-      if (cells(i - 1, k) != kFluid && cells(i, k) != kFluid) continue;
-      // u~ = u + dt g_x  (eq. 2, body force)
-      u(i, k) += dt * cfg.g.x;
-    }
-  const auto& bw = w.owned();
-  for (int k = bw.k0; k < bw.k1; ++k)
-    for (int i = bw.i0; i < bw.i1; ++i) {
-      if (!cells.in_storage(i, k - 1) || !cells.in_storage(i, k)) continue;
-      if (cells(i, k - 1) != kFluid && cells(i, k) != kFluid) continue;
-      // w~ = w + dt g_z  (eq. 2, body force)
-      w(i, k) += dt * cfg.g.z;
-    }
+  gravity_along<Axis::X>(u, cells, dt, cfg.g.x);
+  gravity_along<Axis::Z>(w, cells, dt, cfg.g.z);
 }
 
 void apply_viscosity(FaceField& u, FaceField& w, const CellStates& cells, double dt,
@@ -301,35 +384,9 @@ void apply_viscosity(FaceField& u, FaceField& w, const CellStates& cells, double
   enforce_walls(u, w, cfg, d);
   const FaceField u0 = u, w0 = w;
   auto fluid = [&](int i, int k) { return state(cells, i, k, nx, nz) == kFluid; };
-  // A neighbour face is used when it lies on or beyond a wall (wall value or ghost) or touches
-  // fluid; otherwise (free surface) the centre value stands in: zero normal gradient.
-  auto u_nb = [&](int i, int k, double centre) {
-    if (i <= 0 || i >= nx || k < 0 || k >= nz) return u0(i, k);
-    return fluid(i - 1, k) || fluid(i, k) ? u0(i, k) : centre;
-  };
-  auto w_nb = [&](int i, int k, double centre) {
-    if (k <= 0 || k >= nz || i < 0 || i >= nx) return w0(i, k);
-    return fluid(i, k - 1) || fluid(i, k) ? w0(i, k) : centre;
-  };
   const double c = dt * cfg.nu / (h * h);
-  const auto& bu = u.owned();
-  for (int k = bu.k0; k < bu.k1; ++k)
-    for (int i = std::max(bu.i0, 1); i < std::min(bu.i1, nx); ++i) {
-      if (!fluid(i - 1, k) || !fluid(i, k)) continue;
-      const double uc = u0(i, k);
-      // u += dt nu (u_E + u_W + u_N + u_S - 4 u_P) / h^2  (eq. 2, viscous term)
-      u(i, k) += c * (u_nb(i + 1, k, uc) + u_nb(i - 1, k, uc) + u_nb(i, k + 1, uc) +
-                      u_nb(i, k - 1, uc) - 4.0 * uc);
-    }
-  const auto& bw = w.owned();
-  for (int k = std::max(bw.k0, 1); k < std::min(bw.k1, nz); ++k)
-    for (int i = bw.i0; i < bw.i1; ++i) {
-      if (!fluid(i, k - 1) || !fluid(i, k)) continue;
-      const double wc = w0(i, k);
-      // w += dt nu (w_E + w_W + w_N + w_S - 4 w_P) / h^2  (eq. 2, viscous term)
-      w(i, k) += c * (w_nb(i + 1, k, wc) + w_nb(i - 1, k, wc) + w_nb(i, k + 1, wc) +
-                      w_nb(i, k - 1, wc) - 4.0 * wc);
-    }
+  viscosity_along<Axis::X>(u, u0, c, nx, nz, fluid);
+  viscosity_along<Axis::Z>(w, w0, c, nx, nz, fluid);
 }
 
 void divergence(const FaceField& u, const FaceField& w, const Apertures& E, const CellStates& cells,
@@ -385,64 +442,20 @@ void project(FaceField& u, FaceField& w, const grid::CellField& p, const CellSta
              const SurfaceFractions* surface) {
   core::ScopedTimer timer("fluid: project");
   if (cfg.h <= 0.0) throw core::InputError("fluid::project: FluidConfig::h must be the cell size");
-  auto p_of = [&](int i, int k) { return cells(i, k) == kFluid ? p(i, k) : 0.0; };
-  // Ghost pressure of the air cell across a face of fraction theta: p = 0 at theta h from the
-  // fluid centre, so p_ghost = p_fluid (theta - 1) / theta.
-  auto ghost = [](double p_fluid, double theta) { return p_fluid * (theta - 1.0) / theta; };
-  auto open = [&](signed char a, signed char b) {
-    return a != kSolid && b != kSolid && (a == kFluid || b == kFluid);
-  };
   const double s = dt / (cfg.rho * cfg.h);
   const FluidSpans spans(cells);  // open faces have a fluid cell: the water's band only
-  const auto& bu = u.owned();
-  for (int k = bu.k0; k < bu.k1; ++k) {
-    const auto [i0, i1] = spans.x_faces(k, bu);
-    for (int i = i0; i < i1; ++i) {
-      if (E.E_x(i, k) <= 0.0 || !open(cells(i - 1, k), cells(i, k))) continue;
-      double pl = p_of(i - 1, k), pr = p_of(i, k);
-      if (surface && surface->theta_x(i, k) < 1.0) {
-        if (cells(i - 1, k) == kAir) pl = ghost(pr, surface->theta_x(i, k));
-        if (cells(i, k) == kAir) pr = ghost(pl, surface->theta_x(i, k));
-      }
-      // u = u~ - dt/rho (p_{i} - p_{i-1}) / h
-      u(i, k) -= s * (pr - pl);
-    }
-  }
-  const auto& bw = w.owned();
-  for (int k = bw.k0; k < bw.k1; ++k) {
-    const auto [i0, i1] = spans.z_faces(k, bw);
-    for (int i = i0; i < i1; ++i) {
-      if (E.E_z(i, k) <= 0.0 || !open(cells(i, k - 1), cells(i, k))) continue;
-      double pb = p_of(i, k - 1), pt = p_of(i, k);
-      if (surface && surface->theta_z(i, k) < 1.0) {
-        if (cells(i, k - 1) == kAir) pb = ghost(pt, surface->theta_z(i, k));
-        if (cells(i, k) == kAir) pt = ghost(pb, surface->theta_z(i, k));
-      }
-      // w = w~ - dt/rho (p_{k} - p_{k-1}) / h
-      w(i, k) -= s * (pt - pb);
-    }
-  }
+  project_along<Axis::X>(u, p, cells, E, s, spans, surface ? &surface->theta_x : nullptr);
+  project_along<Axis::Z>(w, p, cells, E, s, spans, surface ? &surface->theta_z : nullptr);
 }
 
 void fluid_faces(const CellStates& cells, const Apertures& E, grid::GridArray<signed char>& u_valid,
                  grid::GridArray<signed char>& w_valid) {
-  auto fluid = [&](int i, int k) { return cells.in_storage(i, k) && cells(i, k) == kFluid; };
   // 0 away from fluid cells: only the water's band is visited
   const FluidSpans spans(cells);
   u_valid.fill(0);
   w_valid.fill(0);
-  const auto& bu = u_valid.storage();
-  for (int k = bu.k0; k < bu.k1; ++k) {
-    const auto [i0, i1] = spans.x_faces(k, bu);
-    for (int i = i0; i < i1; ++i)
-      u_valid(i, k) = E.E_x(i, k) > 0.0 && (fluid(i - 1, k) || fluid(i, k)) ? 1 : 0;
-  }
-  const auto& bw = w_valid.storage();
-  for (int k = bw.k0; k < bw.k1; ++k) {
-    const auto [i0, i1] = spans.z_faces(k, bw);
-    for (int i = i0; i < i1; ++i)
-      w_valid(i, k) = E.E_z(i, k) > 0.0 && (fluid(i, k - 1) || fluid(i, k)) ? 1 : 0;
-  }
+  valid_along<Axis::X>(u_valid, cells, E, spans);
+  valid_along<Axis::Z>(w_valid, cells, E, spans);
 }
 
 namespace {
