@@ -84,6 +84,37 @@ double aperture(const Apertures& E, int i, int k) {
   return A == Axis::X ? E.E_x(i, k) : E.E_z(i, k);
 }
 
+/// The wall values and ghosts of the axis-A velocity f, in (n, t) = (index along A, index
+/// across): zero on the walls across A (n = 0, n_cells), odd ghosts beyond them; beyond the walls
+/// along A (halfway between t = -1 and t = 0, and t_cells - 1 and t_cells), t_lo / t_hi times the
+/// mirrored inside value (free slip +1, no slip -1).
+template <Axis A>
+void wall_ghosts(FaceField& f, int n_cells, int t_cells, double t_lo, double t_hi) {
+  auto at = [&](int n, int t) -> double& { return A == Axis::X ? f(n, t) : f(t, n); };
+  auto inside = [&](int n, int t) {
+    return A == Axis::X ? f.in_storage(n, t) : f.in_storage(t, n);
+  };
+  const auto& b = f.storage();
+  const int n0 = A == Axis::X ? b.i0 : b.k0, n1 = A == Axis::X ? b.i1 : b.k1;
+  const int t0 = A == Axis::X ? b.k0 : b.i0, t1 = A == Axis::X ? b.k1 : b.i1;
+  for (int t = t0; t < t1; ++t) {
+    for (int n : {0, n_cells})
+      if (inside(n, t)) at(n, t) = 0.0;
+    // Normal component odd about the walls: f(-j) = -f(j), f(N + j) = -f(N - j).
+    for (int n = n0; n < 0; ++n)
+      if (inside(-n, t)) at(n, t) = -at(-n, t);
+    for (int n = n_cells + 1; n < n1; ++n)
+      if (inside(2 * n_cells - n, t)) at(n, t) = -at(2 * n_cells - n, t);
+  }
+  // Tangential component about the walls along A.
+  for (int n = n0; n < n1; ++n) {
+    for (int t = t0; t < 0; ++t)
+      if (inside(n, -t - 1)) at(n, t) = t_lo * at(n, -t - 1);
+    for (int t = t_cells; t < t1; ++t)
+      if (inside(n, 2 * t_cells - 1 - t)) at(n, t) = t_hi * at(n, 2 * t_cells - 1 - t);
+  }
+}
+
 /// The body force on the axis-A velocity f of the faces with a fluid cell on either side
 /// (interior faces only: the grid's outer faces have no cell on their outer side).
 template <Axis A>
@@ -332,38 +363,8 @@ void enforce_walls(FaceField& u, FaceField& w, const FluidConfig& cfg,
   auto t_of = [&](TankWall wall) { return no_slip_at(cfg, wall) ? -1.0 : 1.0; };
   const double t_left = t_of(TankWall::Left), t_right = t_of(TankWall::Right);
   const double t_bottom = t_of(TankWall::Bottom), t_top = t_of(TankWall::Top);
-  const auto& bu = u.storage();
-  for (int k = bu.k0; k < bu.k1; ++k) {
-    for (int i : {0, nx})
-      if (u.in_storage(i, k)) u(i, k) = 0.0;
-    // Normal component odd about the x-walls: u(-j) = -u(j), u(nx + j) = -u(nx - j).
-    for (int i = bu.i0; i < 0; ++i)
-      if (u.in_storage(-i, k)) u(i, k) = -u(-i, k);
-    for (int i = nx + 1; i < bu.i1; ++i)
-      if (u.in_storage(2 * nx - i, k)) u(i, k) = -u(2 * nx - i, k);
-  }
-  // Tangential component about the z-walls (walls halfway between u(k = -1) and u(k = 0)).
-  for (int i = bu.i0; i < bu.i1; ++i) {
-    for (int k = bu.k0; k < 0; ++k)
-      if (u.in_storage(i, -k - 1)) u(i, k) = t_bottom * u(i, -k - 1);
-    for (int k = nz; k < bu.k1; ++k)
-      if (u.in_storage(i, 2 * nz - 1 - k)) u(i, k) = t_top * u(i, 2 * nz - 1 - k);
-  }
-  const auto& bw = w.storage();
-  for (int i = bw.i0; i < bw.i1; ++i) {
-    for (int k : {0, nz})
-      if (w.in_storage(i, k)) w(i, k) = 0.0;
-    for (int k = bw.k0; k < 0; ++k)
-      if (w.in_storage(i, -k)) w(i, k) = -w(i, -k);
-    for (int k = nz + 1; k < bw.k1; ++k)
-      if (w.in_storage(i, 2 * nz - k)) w(i, k) = -w(i, 2 * nz - k);
-  }
-  for (int k = bw.k0; k < bw.k1; ++k) {
-    for (int i = bw.i0; i < 0; ++i)
-      if (w.in_storage(-i - 1, k)) w(i, k) = t_left * w(-i - 1, k);
-    for (int i = nx; i < bw.i1; ++i)
-      if (w.in_storage(2 * nx - 1 - i, k)) w(i, k) = t_right * w(2 * nx - 1 - i, k);
-  }
+  wall_ghosts<Axis::X>(u, nx, nz, t_bottom, t_top);
+  wall_ghosts<Axis::Z>(w, nz, nx, t_left, t_right);
   if (open) enforce_open_sides(u, w, cfg.open, d, kept);
 }
 
