@@ -208,6 +208,10 @@ struct CellList {
   std::vector<int> start, order;  // solids of cell c: order[start[c] .. start[c + 1])
 
   void cell_of(const Vec2& x, long long& ci, long long& ck) const {
+    if (!std::isfinite(x.x) || !std::isfinite(x.z)) {
+      ci = ck = 0;
+      return;
+    }
     ci = std::min(nx - 1, static_cast<long long>((x.x - lo.x) / cell));
     ck = std::min(nz - 1, static_cast<long long>((x.z - lo.z) / cell));
   }
@@ -216,18 +220,26 @@ struct CellList {
 template <class At>
 CellList make_cell_list(const At& at, std::size_t n_all, double cell) {
   CellList cl;
-  Vec2 lo = at(0).x, hi = at(0).x;
-  for (std::size_t j = 1; j < n_all; ++j) {
-    lo = {std::min(lo.x, at(j).x.x), std::min(lo.z, at(j).x.z)};
-    hi = {std::max(hi.x, at(j).x.x), std::max(hi.z, at(j).x.z)};
+  // the box of the solids with a finite position (a blown-up one, left in cell 0, meets nothing:
+  // its distances compare false; the step's check stops the run on every rank)
+  auto finite = [](const Vec2& x) { return std::isfinite(x.x) && std::isfinite(x.z); };
+  Vec2 lo{0.0, 0.0}, hi{0.0, 0.0};
+  bool first = true;
+  for (std::size_t j = 0; j < n_all; ++j) {
+    const Vec2& x = at(j).x;
+    if (!finite(x)) continue;
+    lo = first ? x : Vec2{std::min(lo.x, x.x), std::min(lo.z, x.z)};
+    hi = first ? x : Vec2{std::max(hi.x, x.x), std::max(hi.z, x.z)};
+    first = false;
   }
-  long long nx = static_cast<long long>((hi.x - lo.x) / cell) + 1;
-  long long nz = static_cast<long long>((hi.z - lo.z) / cell) + 1;
-  while (nx * nz > 4 * static_cast<long long>(n_all) + 64) {
+  // the counts in double: a blown-up solid far away must not overflow them (exact below 2^53,
+  // so the same cells as in integers otherwise)
+  auto count = [](double span, double c) { return std::floor(span / c) + 1.0; };
+  while (count(hi.x - lo.x, cell) * count(hi.z - lo.z, cell) >
+         4.0 * static_cast<double>(n_all) + 64)
     cell *= 2.0;
-    nx = static_cast<long long>((hi.x - lo.x) / cell) + 1;
-    nz = static_cast<long long>((hi.z - lo.z) / cell) + 1;
-  }
+  const auto nx = static_cast<long long>(count(hi.x - lo.x, cell));
+  const auto nz = static_cast<long long>(count(hi.z - lo.z, cell));
   cl.lo = lo, cl.cell = cell, cl.nx = nx, cl.nz = nz;
   // counting sort of the solids into cells
   cl.start.assign(static_cast<std::size_t>(nx * nz + 1), 0);
