@@ -2,6 +2,9 @@
 //                                       [--restart PATH|latest]
 //         picdem --check CASE.yaml [--set ...]     validate only
 //         picdem --help-parameters                  the case-file reference (Markdown)
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -17,6 +20,7 @@
 #include "picdem/core/timer.hpp"
 #include "picdem/coupling/schema.hpp"
 #include "picdem/coupling/simulation.hpp"
+#include "picdem/dem/dem_solver.hpp"
 #include "picdem/fluid/pressure_solver.hpp"
 #include "picdem/io/checkpoint_files.hpp"
 #include "picdem/run/run.hpp"
@@ -97,6 +101,30 @@ struct RunParts {
   }
 };
 
+// The solids' resolution, which every run states (issue 14): their number, the range of their
+// bounding diameters, the contact law's dt_DEM and eq. 25's subcycles at time/dt_max
+// (K = INT(dt / dt_DEM), each dt / K long). Collective; nothing without solids.
+void log_solids(const picdem::core::Comm& comm, const picdem::coupling::Simulation& sim,
+                const picdem::core::Params& params) {
+  const picdem::dem::DemSolver* dem = sim.dem();
+  if (!dem) return;
+  const auto all = dem->gather_all();
+  if (all.empty()) return;
+  double d_min = 1e300, d_max = 0.0;
+  for (const auto& s : all) {
+    const double d = 2.0 * dem->shape_of(s.id)->bounding_radius();
+    d_min = std::min(d_min, d), d_max = std::max(d_max, d);
+  }
+  const double dt_max = params.real("time/dt_max"), dt_dem = dem->dt_dem();
+  const double k = std::max(1.0, std::floor(dt_max / dt_dem));  // a double: no overflow
+  char text[320];
+  std::snprintf(text, sizeof text,
+                "picdem: %zu solids, bounding diameters %.4g to %.4g m; dt_DEM = %.4g s, at "
+                "time/dt_max = %.4g s %.0f subcycles of %.4g s",
+                all.size(), d_min, d_max, dt_dem, dt_max, k, dt_max / k);
+  picdem::core::log(comm, text);
+}
+
 // Runs the case (after the parameters are read); the log and run.yaml from the moment the output
 // folder is known.
 int run_case(const picdem::core::Comm& comm, const Args& args, const picdem::core::Params& params,
@@ -115,6 +143,7 @@ int run_case(const picdem::core::Comm& comm, const Args& args, const picdem::cor
     picdem::core::ScopedTimer timer("setup");  // grid, seeding, solids, solvers (timers.txt)
     run.sim = std::make_unique<picdem::coupling::Simulation>(comm, params);
   }
+  log_solids(comm, *run.sim, params);
   run.steps = std::make_unique<picdem::run::Run>(*run.sim);
   if (from.empty())
     run.steps->open_output(out);

@@ -34,7 +34,7 @@ def main():
     out = case_check.fresh(work, f"mu{MU}_mur{MUR}")
     cmd = [picdem, os.path.join(case_dir, "case.yaml"), "--output", out, "--set", f"dem/mu={MU}",
            "--set", f"dem/rolling_resistance={MUR}", "--set", "checkpoint/at_end=false"]
-    case_check.run(cmd)
+    print("resolution: " + case_check.resolution(case_check.run(cmd), out))
     analyse = case_check.case_module(case_dir)
     m = analyse.at_end(os.path.join(out, "solids.csv"))
     print(f"cases/angle_of_repose (300 disks, d 8-12 mm, grid 2 mm, gap 2 mm, 1 rank), mu = {MU}, "

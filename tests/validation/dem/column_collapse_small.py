@@ -48,7 +48,7 @@ def main():
            "--set", f"time/end={T_END}", "--set", f"solids/grains/count={COUNT}",
            "--set", f"solids/grains/region=[0, 0.006, {L0}, 0.8]",
            "--set", "checkpoint/at_end=false"]
-    case_check.run(cmd)
+    print("resolution: " + case_check.resolution(case_check.run(cmd), out))
     analyse = case_check.case_module(case_dir)
     fr = analyse.frames(os.path.join(out, "solids.csv"))
     ts = sorted(fr)

@@ -30,8 +30,9 @@ def main():
     water, grains = case_check.fresh(work, "water"), case_check.fresh(work, "grains")
     case_check.run([picdem, os.path.join(case_dir, "water.yaml"), "--output", water, "--set", "time/end=0.5",
          "--set", "checkpoint/at_end=false"])
-    case_check.run([picdem, os.path.join(case_dir, "case.yaml"), "--output", grains,
-         "--set", "checkpoint/at_end=false"])
+    console = case_check.run([picdem, os.path.join(case_dir, "case.yaml"), "--output", grains,
+                              "--set", "checkpoint/at_end=false"])
+    print("resolution of the grains' run: " + case_check.resolution(console, grains))
     t_water = None
     with open(os.path.join(water, "timeseries.csv")) as f:
         for r in csv.DictReader(f):

@@ -32,7 +32,7 @@ def main():
     out = case_check.fresh(work, "sorting")
     cmd = [picdem, os.path.join(case_dir, "case.yaml"), "--output", out,
            "--set", "checkpoint/at_end=false"]
-    case_check.run(cmd)
+    print("resolution: " + case_check.resolution(case_check.run(cmd), out))
     analyse = case_check.case_module(case_dir)
     analyse.read_layers(out)
     m = analyse.at_end(os.path.join(out, "solids.csv"))
