@@ -3,7 +3,9 @@
 #include "picdem/fluid/viscous_bodies.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "picdem/geometry/locator.hpp"
 
@@ -18,6 +20,24 @@ bool inside_polygons(const std::vector<std::vector<Vec2>>& polygons, const Vec2&
   for (const auto& poly : polygons)
     if (geometry::inside_polygon(p, poly)) return true;
   return false;
+}
+
+/// The extent of the polygons' vertices, padded by 1e-9 of its size (an edge's crossing of a line
+/// is rounded within it), as the body's box.
+void padded_box(const std::vector<std::vector<Vec2>>& polygons, ViscousBody& body) {
+  const double inf = std::numeric_limits<double>::infinity();
+  Vec2 lo{inf, inf}, hi{-inf, -inf};
+  for (const auto& poly : polygons)
+    for (const Vec2& v : poly) {
+      lo = {std::min(lo.x, v.x), std::min(lo.z, v.z)};
+      hi = {std::max(hi.x, v.x), std::max(hi.z, v.z)};
+    }
+  if (!(lo.x <= hi.x)) return;  // no vertices: the box stays unbounded
+  const double pad = 1e-9 * std::max({hi.x - lo.x, hi.z - lo.z, std::abs(lo.x), std::abs(lo.z),
+                                      std::abs(hi.x), std::abs(hi.z)}) +
+                     1e-12;
+  body.box_lo = lo - Vec2{pad, pad};
+  body.box_hi = hi + Vec2{pad, pad};
 }
 
 /// Position of solid `id` in `solids` (ordered by id); -1 when absent.
@@ -43,11 +63,17 @@ std::vector<ViscousBody> viscous_bodies(const std::vector<geometry::SolidPlaceme
     bodies.push_back({[shape, pose](const Vec2& x) { return shape->contains(pose.to_body(x)); },
                       st.v, st.omega, pose.x, shape->mass_properties().area,
                       rigid_rows ? st.mass : 0.0, rigid_rows ? st.inertia : 0.0});
+    // Every point of the body lies within its bounding radius of the centre (to_body's rounding
+    // is far below the pad).
+    const double r = shape->bounding_radius() * (1.0 + 1e-9) + 1e-12;
+    bodies.back().box_lo = pose.x - Vec2{r, r};
+    bodies.back().box_hi = pose.x + Vec2{r, r};
   }
   for (const geometry::Obstacle& o : obstacles) {
     const auto polygons = o.polygons;
     bodies.push_back(
         {[polygons](const Vec2& x) { return inside_polygons(polygons, x); }, {}, 0.0, {}, 0.0});
+    padded_box(polygons, bodies.back());
   }
   return bodies;
 }

@@ -73,7 +73,7 @@ Crossing first_crossing(const Vec2& p, const Vec2& t, const std::vector<ViscousB
 
 bool any_inside(const Vec2& x, const std::vector<ViscousBody>& bodies) {
   for (const auto& b : bodies)
-    if (b.inside(x)) return true;
+    if (b.in_box(x) && b.inside(x)) return true;
   return false;
 }
 

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -38,6 +39,17 @@ struct ViscousBody {
   /// With mass > 0: omega alone is an unknown of the implicit step, the translation keeps the
   /// split's start-of-step velocity (fluid/viscous_rotation_rows, doc/viscous.md).
   bool rotation_only = false;
+  /// A box holding the body (inside and boundary): a point outside it is outside the body, so
+  /// `inside` is not asked (the cut-node masses' samples, the stencil's nodes). Unbounded unless
+  /// given (viscous_bodies gives it: the solid's centre +- its bounding radius, an obstacle's
+  /// vertices' extent, each padded).
+  core::Vec2 box_lo{-std::numeric_limits<double>::infinity(),
+                    -std::numeric_limits<double>::infinity()};
+  core::Vec2 box_hi{std::numeric_limits<double>::infinity(),
+                    std::numeric_limits<double>::infinity()};
+  bool in_box(const core::Vec2& x) const {
+    return x.x >= box_lo.x && x.x <= box_hi.x && x.z >= box_lo.z && x.z <= box_hi.z;
+  }
   core::Vec2 velocity_at(const core::Vec2& x) const {
     return {velocity.x - omega * (x.z - centre.z), velocity.z + omega * (x.x - centre.x)};
   }
