@@ -1,5 +1,6 @@
 // The output/ keys (output_parameters.hpp).
 #include "picdem/io/output_parameters.hpp"
+#include <sstream>
 
 namespace picdem::io {
 
@@ -41,6 +42,16 @@ void declare_output_parameters(core::ParamSchema& s) {
       errors.push_back(
           "key 'output/solid_count_box' must be empty or [x_min, x_max, z_min, z_max] "
           "with min < max");
+    // a probe outside the tank would record NaN (no fluid) all run long
+    const double x0 = p.reals("grid/origin").at(0), x1 = x0 + p.real("grid/length");
+    for (const double x : p.reals("output/level_probes"))
+      if (!(x >= x0 && x <= x1)) {
+        std::ostringstream m;
+        m << "key 'output/level_probes' = " << x
+          << " is not allowed: a probe must lie in the tank, "
+          << "x in [" << x0 << ", " << x1 << "] (grid/origin, grid/length)";
+        errors.push_back(m.str());
+      }
   });
 }
 
