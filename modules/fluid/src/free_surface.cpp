@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-#include "tent.hpp"
+#include "picdem/grid/tent.hpp"
 
 namespace picdem::fluid {
 
@@ -13,8 +13,8 @@ void open_share_correction(grid::CellField& S, const geometry::CutCells& cut,
   const auto b = S.storage();
   const auto ext = d.spec().extent(grid::Stagger::Cell);
   // The tent's mass (per axis) in the cell's left or lower neighbour, the cell, the other one.
-  const double tent[3] = {detail::tent_share(-1.5, -0.5), detail::tent_share(-0.5, 0.5),
-                          detail::tent_share(0.5, 1.5)};
+  const double tent[3] = {grid::tent_share(-1.5, -0.5), grid::tent_share(-0.5, 0.5),
+                          grid::tent_share(0.5, 1.5)};
   // Where the cell and its neighbours are all fluid, open = all exactly and S is unchanged: only
   // cells next to a cut or covered cell are visited. S(i, k) is the only value of S read for
   // cell (i, k), so S is corrected in place.

@@ -31,7 +31,7 @@
 
 #include "picdem/core/error.hpp"
 #include "picdem/fluid/viscous.hpp"
-#include "tent.hpp"
+#include "picdem/grid/tent.hpp"
 
 namespace picdem::fluid {
 
@@ -207,7 +207,7 @@ void set_cut_node_masses(ViscousStencil& s, const ViscousGrid& g,
   // The tent's share (per axis) of each sample's stretch [a step - 1, (a + 1) step - 1].
   std::array<double, 2 * kPerCell> share;
   for (int a = 0; a < 2 * kPerCell; ++a)
-    share[static_cast<std::size_t>(a)] = detail::tent_share(a * step - 1.0, (a + 1) * step - 1.0);
+    share[static_cast<std::size_t>(a)] = grid::tent_share(a * step - 1.0, (a + 1) * step - 1.0);
   s.mass.assign(s.node_of.size(), 1.0);
   for (std::size_t r = 0; r < s.node_of.size(); ++r) {
     const int n = s.node_of[r], i = n % s.ni, k = n / s.ni;

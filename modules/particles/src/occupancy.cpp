@@ -4,21 +4,10 @@
 #include <stdexcept>
 #include <vector>
 
+#include "picdem/grid/tent.hpp"
 #include "stencil.hpp"
 
 namespace picdem::particles {
-
-namespace {
-// Mass of the 1D tent of half-width 1 centred at c (in cell units) that lies in [0, n].
-double tent_mass_inside(double c, double n) {
-  auto cdf = [](double t) {  // integral of the tent from -1 to t
-    if (t <= -1) return 0.0;
-    if (t >= 1) return 1.0;
-    return t <= 0 ? 0.5 * (1 + t) * (1 + t) : 1.0 - 0.5 * (1 - t) * (1 - t);
-  };
-  return cdf(n - c) - cdf(0.0 - c);
-}
-}  // namespace
 
 namespace {
 
@@ -34,9 +23,10 @@ void finish(const grid::Decomposition& d, const grid::Halo& halo, int particles_
   halo.reverse_add(S);
   const auto own = d.owned_cells();
   std::vector<double> mx(static_cast<std::size_t>(own.nx()));  // the tent's share along x
-  for (int i = own.i0; i < own.i1; ++i) mx[i - own.i0] = tent_mass_inside(i + 0.5, spec.nx);
+  for (int i = own.i0; i < own.i1; ++i)
+    mx[i - own.i0] = grid::tent_share(-(i + 0.5), spec.nx - (i + 0.5));
   for (int k = own.k0; k < own.k1; ++k) {
-    const double mz = tent_mass_inside(k + 0.5, spec.nz);
+    const double mz = grid::tent_share(-(k + 0.5), spec.nz - (k + 0.5));
     for (int i = own.i0; i < own.i1; ++i) S(i, k) /= particles_per_cell * mx[i - own.i0] * mz;
   }
   halo.forward(S);

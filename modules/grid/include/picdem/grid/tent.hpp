@@ -1,12 +1,13 @@
 #pragma once
 // The P2G tent integrated (not interpolated): the share of a node's transfer weight that a
-// stretch or a box holds. One function for the open-share correction of the free surface
-// (free_surface.cpp: the tent's mass in a cell and its neighbours) and the viscous cut-node
-// masses (viscous_operator.cpp: the tent's mass outside the bodies). The particles' kernel
-// itself (interpolation) is particles' stencil.
+// stretch or a box holds. One function for the particles' occupancy at the tank walls
+// (particles/occupancy.cpp: the tent's mass inside the tank), the open-share correction of the
+// free surface (fluid/free_surface.cpp: the tent's mass in a cell and its neighbours) and the
+// viscous cut-node masses (fluid/viscous_operator.cpp: the tent's mass outside the bodies). The
+// particles' kernel itself (interpolation) is particles' stencil.
 #include <algorithm>
 
-namespace picdem::fluid::detail {
+namespace picdem::grid {
 
 /// Integral of the 1D tent max(0, 1 - |t|) from -1 to t (t in cell sizes from its node): 0 below
 /// -1, 1/2 at 0, 1 above 1.
@@ -25,4 +26,4 @@ inline double tent_share(double lo, double hi) {
   return tent_cdf(hi) - tent_cdf(lo);
 }
 
-}  // namespace picdem::fluid::detail
+}  // namespace picdem::grid
