@@ -144,10 +144,13 @@ TEST(ShapeContacts, EllipseAndRoundedPolygonAgainstEveryShape) {
         const auto wa = to_world(a->boundary(), {xa, ta});
         const auto wb0 = to_world(b->boundary(), {{0.0, 0.0}, tb});
         const double s = kGap * (0.02 + 1.48 * u(rng));
+        // each boundary's points within |xb - xa| of the other centre: the nearest points of two
+        // convex solids are among them (the ray between the centres meets each boundary closer
+        // than that), so the sampled distance is always finite
         auto sampled = [&](const Vec2& xb) {
-          return brute(
-              samples(wa, xb, b->bounding_radius() + 2 * kGap),
-              samples(to_world(b->boundary(), {xb, tb}), xa, a->bounding_radius() + 2 * kGap));
+          const double reach = core::norm(xb - xa) + kDl;
+          return brute(samples(wa, xb, reach),
+                       samples(to_world(b->boundary(), {xb, tb}), xa, reach));
         };
         Vec2 xb = xa + (core::dot(support_point(wa, d) - xa, d) +
                         core::dot(support_point(wb0, -1.0 * d), -1.0 * d) + s) *
