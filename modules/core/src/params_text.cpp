@@ -111,6 +111,33 @@ std::string without_comment(const std::string& line) {
   return line.substr(0, scan_line(line, depth));
 }
 
+// YAML lets a block list sit at its key's own indentation ("key:" then "- 1" below it, as PyYAML
+// writes lists); Teuchos' reader takes only lists indented deeper than their key. Moves such
+// items (and the lines that continue them) two columns right; the line count is unchanged.
+void indent_block_sequences(std::vector<std::string>& lines) {
+  auto indent_of = [](const std::string& l) { return l.find_first_not_of(' '); };
+  auto is_item = [](const std::string& l, std::size_t at) {
+    return l.compare(at, 2, "- ") == 0 || (l.size() == at + 1 && l[at] == '-');
+  };
+  for (std::size_t k = 0; k + 1 < lines.size(); ++k) {
+    const std::string key_line = without_comment(lines[k]);
+    const auto key_indent = indent_of(key_line);
+    const auto last = key_line.find_last_not_of(" \t");
+    if (key_indent == std::string::npos || key_line[last] != ':') continue;
+    std::size_t n = k + 1;
+    while (n < lines.size() && indent_of(without_comment(lines[n])) == std::string::npos) ++n;
+    if (n == lines.size() || indent_of(lines[n]) != key_indent || !is_item(lines[n], key_indent))
+      continue;
+    for (; n < lines.size(); ++n) {
+      const auto at = indent_of(without_comment(lines[n]));
+      if (at != std::string::npos &&
+          (at < key_indent || (at == key_indent && !is_item(lines[n], at))))
+        break;
+      if (at != std::string::npos) lines[n].insert(0, "  ");
+    }
+    k = n - 1;
+  }
+}
 }  // namespace
 
 ReadableYaml readable_yaml(const std::string& yaml, std::size_t skip_levels) {
@@ -138,6 +165,7 @@ ReadableYaml readable_yaml(const std::string& yaml, std::size_t skip_levels) {
     }
     if (depth > 0) lines.push_back(joined);  // unclosed: left for the reader to refuse
   }
+  indent_block_sequences(lines);
   // Take out "key: []", remembering its sublists.
   ReadableYaml out;
   std::vector<std::pair<std::size_t, std::string>> open;  // indentation, name of each open sublist

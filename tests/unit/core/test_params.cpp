@@ -97,6 +97,22 @@ TEST(Params, EmptyListIsAnEmptyArray) {
   expect_error("time:\n  end: []\n", {"time/end"});
   expect_error("time:\n  end: 1\n", {"grid/origin", "has 0 values"}, {"grid/origin=[]"});
 }
+TEST(Params, BlockListAtTheKeysIndentation) {
+  // "key:" with its items "- v" at the key's own column, as PyYAML writes lists (Teuchos' reader
+  // takes only deeper items); an item's comment and a blank line inside the list are kept.
+  auto p = read_case_text(
+      "grid:\n  origin:\n  - 0.5   # x\n\n  - 1.5\n  nx: 12\nobstacles:\n  wall:\n    type: box\n"
+      "    hi:\n    - 2\n    - 3\ntime:\n  end: 2\n",
+      "case.yaml", {}, schema());
+  EXPECT_EQ(p.reals("grid/origin"), (std::vector<double>{0.5, 1.5}));
+  EXPECT_EQ(p.integer("grid/nx"), 12);
+  EXPECT_EQ(p.reals("obstacles/wall/hi"), (std::vector<double>{2.0, 3.0}));
+  EXPECT_DOUBLE_EQ(p.real("time/end"), 2.0);
+  // the line numbers of the file still hold after such a list
+  const std::string msg =
+      error_of("grid:\n  origin:\n  - 0\n  - 0\ntime:\n  end: 1\n  x: \"a\" b\n");
+  EXPECT_NE(msg.find("line 7"), std::string::npos) << msg;
+}
 TEST(ParamsBad, LineNumbersCountTheJoinedLines) {
   // A flow list over three lines, then a bad line: the message names the file's line (7).
   const std::string msg =
