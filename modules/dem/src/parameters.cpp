@@ -67,8 +67,11 @@ void declare_parameters(core::ParamSchema& schema) {
   schema.real("dem/theta", 0.01, "penetration coefficient theta of the normal stiffness (eq. 10)")
       .positive();
   schema.real("dem/gamma", 150.0, "time-step coefficient gamma (eq. 18)").positive();
-  schema.real("dem/gap_cells", 2.0, "imaginary gap between real boundaries in cells (eq. 19)")
-      .non_negative();
+  schema
+      .real("dem/gap_cells", 2.0,
+            "imaginary gap between real boundaries in cells (eq. 19); > 0: the contact forces "
+            "start at the gap, and real boundaries that touch stop the run")
+      .positive();
   schema.string("dem/tangential_model", "one_step", {"one_step", "accumulated"},
                 "tangential spring: one-step displacement (paper eq. 8) or accumulated over the "
                 "contact (Zhang et al. 2009)");
