@@ -137,6 +137,9 @@ the value and what is allowed, when:
   largest over its parts: any overlap is found, and the depth named is that of the deepest part.
   Depths below 1e-9 of the larger size are round-off. Candidate pairs come from a grid of buckets
   of the median solid size (O(N)): 100,014 cylinders are checked in about 0.1 s;
+- an obstacle reaches farther from the tank than the tank's own length (in x) or height (in z),
+  the mark of a mistyped size (a fall pipe's `wall_thickness` or `funnel_height` of 1e30, which
+  would also hide every overlap below in round-off); the message names the obstacle's entry;
 - water regions reach outside the tank or are empty;
 - `solver/Belos`, `solver/MueLu` (and the lists merged from `solver/MueLu_solids`,
   `solver/MueLu_one_level`), or the implicit viscous solve's `viscous_solver/Belos`,

@@ -221,11 +221,8 @@ void box_pairs(const std::vector<Outline>& s,
     }
 }
 
-void check_in_tank(const core::Params& params, const std::vector<Outline>& solids,
+void check_in_tank(const core::Box2& tank, const std::vector<Outline>& solids,
                    std::vector<std::string>& errors) {
-  const auto o = params.reals("grid/origin");
-  const core::Box2 tank{{o[0], o[1]},
-                        {o[0] + params.real("grid/length"), o[1] + params.real("grid/height")}};
   for (const auto& s : solids) {
     const double out = std::max({tank.lo.x - s.box.lo.x, s.box.hi.x - tank.hi.x,
                                  tank.lo.z - s.box.lo.z, s.box.hi.z - tank.hi.z});
@@ -240,19 +237,50 @@ void check_in_tank(const core::Params& params, const std::vector<Outline>& solid
   }
 }
 
+// An obstacle is geometry of the tank: a vertex farther from the tank than the tank's own length
+// (or height) is a mistyped size (e.g. a fall pipe's wall_thickness of 1e30), which would also
+// drown the overlap depths below in round-off.
+void check_obstacles_near_tank(const core::Box2& tank, const std::vector<Outline>& obstacles,
+                               std::vector<std::string>& errors) {
+  const double lx = tank.hi.x - tank.lo.x, lz = tank.hi.z - tank.lo.z;
+  const core::Box2 near{{tank.lo.x - lx, tank.lo.z - lz}, {tank.hi.x + lx, tank.hi.z + lz}};
+  std::string last;
+  for (const auto& ob : obstacles) {
+    if (ob.what == last) continue;  // one message per obstacle entry
+    const core::Box2& b = ob.box;
+    if (b.lo.x >= near.lo.x && b.hi.x <= near.hi.x && b.lo.z >= near.lo.z && b.hi.z <= near.hi.z)
+      continue;
+    last = ob.what;
+    errors.push_back(ob.what + " reaches x in [" + fmt(b.lo.x) + ", " + fmt(b.hi.x) + "], z in [" +
+                     fmt(b.lo.z) + ", " + fmt(b.hi.z) +
+                     "]: check its sizes and coordinates; allowed: within one tank length and "
+                     "height of the tank, x in [" +
+                     fmt(near.lo.x) + ", " + fmt(near.hi.x) + "], z in [" + fmt(near.lo.z) + ", " +
+                     fmt(near.hi.z) + "] (grid/origin, grid/length, grid/height)");
+  }
+}
+
+core::Box2 tank_of(const core::Params& params) {
+  const auto o = params.reals("grid/origin");
+  return {{o[0], o[1]}, {o[0] + params.real("grid/length"), o[1] + params.real("grid/height")}};
+}
+
 }  // namespace
 
 std::vector<std::string> check_solid_placement(const core::Params& params,
                                                std::size_t max_messages) {
   std::vector<std::string> errors;
+  const core::Box2 tank = tank_of(params);
+  const auto obstacles = obstacle_outlines(params);
+  check_obstacles_near_tank(tank, obstacles, errors);
+  if (!errors.empty()) return errors;
   const auto solids = solid_outlines(params);
-  check_in_tank(params, solids, errors);
+  check_in_tank(tank, solids, errors);
   box_pairs(solids, [&](std::size_t i, std::size_t j) {
     const double depth = overlap_depth(solids[i], solids[j]);
     if (depth > 1e-9 * std::max(solids[i].size(), solids[j].size()))
       errors.push_back(overlap_message(solids[i], solids[j], depth));
   });
-  const auto obstacles = obstacle_outlines(params);
   for (const auto& s : solids)
     for (const auto& ob : obstacles) {
       if (!s.box.overlaps(ob.box)) continue;

@@ -1,7 +1,7 @@
 #pragma once
 // Where the case file puts its solids, checked before anything runs (doc/cases.md, "Checks
 // before the run"): every solid inside the tank, no two solids overlapping, no solid overlapping
-// an obstacle. Contact is allowed: real boundaries at zero distance or more pass.
+// an obstacle, no obstacle far outside the tank. Contact is allowed: real boundaries at zero distance or more pass.
 #include <string>
 #include <vector>
 
