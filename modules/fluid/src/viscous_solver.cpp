@@ -197,6 +197,11 @@ int solve_viscous_implicit(const ViscousStencil& s, double nu, double dt,
     msg << "implicit viscous solve did not converge: relative true residual " << res << " after "
         << iterations << " iterations, viscous_solver/tolerance = " << solver.tolerance
         << " (viscous_solver/max_iterations = " << solver.max_iterations << ")";
+    // the mass term h^2 / (nu dt) lost to round-off against the Laplacian: nearly singular
+    if (alpha < 1e-8)
+      msg << "; the viscous number nu dt / h^2 = " << 1.0 / alpha << " (fluid/viscosity = " << nu
+          << " m^2/s, dt = " << dt << " s, h = " << s.h
+          << " m) leaves the system nearly singular: is fluid/viscosity in m^2/s?";
     throw core::SolverError(msg.str());
   }
   auto x = X->getLocalViewHost(Tpetra::Access::ReadOnly);
