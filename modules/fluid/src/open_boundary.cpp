@@ -105,6 +105,20 @@ bool OpenBoundaries::any_inflow() const {
                      [](const auto& s) { return s.kind == OpenKind::Inflow; });
 }
 
+double OpenBoundaries::max_inflow_speed(double t) const {
+  double v = 0.0;
+  for (const OpenSide& o : side) {
+    if (o.kind != OpenKind::Inflow) continue;
+    if (o.shape != InflowShape::Table) {
+      v = std::max(v, std::abs(o.velocity));  // uniform, or the parabola's peak
+      continue;
+    }
+    // bilinear in (s, t): the largest magnitude at time t lies at one of the table's heights
+    for (double s : o.heights) v = std::max(v, std::abs(o.speed(s, t)));
+  }
+  return v;
+}
+
 double OpenBoundaries::face_speed(std::size_t n, double s) const {
   const OpenSide& o = side[n];
   if (!(t1 > t0)) return o.speed(s, t0);

@@ -51,6 +51,8 @@ double choose_time_step(const TimeStepLimits& set, const FluidConfig& cfg, doubl
   if (!fluid) return dt_max;
   const double reach = set.cfl * set.h;  // the distance anything may move in one step
   double dt = std::min(dt_max, cfl_time_step(fluid->u, fluid->w, set.h, set.cfl, dt_max, comm));
+  if (const double in = cfg.open.max_inflow_speed(t); in > 0.0)
+    dt = std::min(dt, reach / in);  // the inflow's speed (time/cfl), known before the grid has it
   dt = std::min(dt, viscous_time_limit(cfg));  // explicit viscosity's stability
   const double s = motion.speed;
   if (motion.accel > 0.0)  // (s + a dt) dt = CFL h: dt = 2 CFL h / (s + sqrt(s^2 + 4 a CFL h))
@@ -61,7 +63,10 @@ double choose_time_step(const TimeStepLimits& set, const FluidConfig& cfg, doubl
   if (!(dt >= set.dt_min) && set.t_end - t > set.dt_min) {
     std::ostringstream m;
     m << "step " << step << " at t = " << t << " s: the time step fell to " << dt
-      << " s (below time/dt_min): the flow has blown up";
+      << " s (below time/dt_min): the flow has blown up"
+      << (cfg.open.any_inflow() ? " or the inflow speed (open/<side>/velocity or table) is "
+                                  "too fast for time/dt_min"
+                                : "");
     throw core::SolverError(m.str());
   }
   return dt;

@@ -77,3 +77,28 @@ TEST(TimeStep, CollapseBelowDtMinStopsTheRun) {
   EXPECT_NEAR(fluid::choose_time_step(limits, cfg, 0.9995, 7, &t.f, {50.0}, 0.0, t.comm), 1e-4,
               1e-18);
 }
+
+// An inflow bounds the step before the grid carries its speed (a tank at rest, step 1): a
+// uniform 4 m/s inflow, 0.5 0.01 / 4 = 1.25e-3; a table whose largest speed at t = 1 is 10 m/s
+// (between 6 and 14 at times 0.5 and 1.5, at its second height), 5e-4; an outflow, none.
+TEST(TimeStep, InflowSpeedBoundsTheStepFromRest) {
+  Tank t;
+  for (auto* field : {&t.f.u, &t.f.w}) {
+    const auto b = field->storage();
+    for (int k = b.k0; k < b.k1; ++k)
+      for (int i = b.i0; i < b.i1; ++i) (*field)(i, k) = 0.0;
+  }
+  const fluid::TimeStepLimits limits{0.01, 0.5, 0.01, 1e-6, 2.0};
+  fluid::FluidConfig cfg;
+  cfg.h = 0.01;
+  EXPECT_EQ(fluid::choose_time_step(limits, cfg, 1.0, 0, &t.f, {0.0}, 0.0, t.comm), 0.01);
+  fluid::OpenSide& left = cfg.open.side[0];
+  left.kind = fluid::OpenKind::Inflow, left.from = 0.0, left.to = 0.04, left.velocity = 4.0;
+  EXPECT_NEAR(fluid::choose_time_step(limits, cfg, 1.0, 0, &t.f, {0.0}, 0.0, t.comm), 1.25e-3,
+              1e-18);
+  left.shape = fluid::InflowShape::Table;
+  left.heights = {0.0, 0.04}, left.times = {0.5, 1.5}, left.table = {1.0, 6.0, 2.0, 14.0};
+  EXPECT_NEAR(fluid::choose_time_step(limits, cfg, 1.0, 0, &t.f, {0.0}, 0.0, t.comm), 5e-4, 1e-18);
+  left.kind = fluid::OpenKind::Outflow;
+  EXPECT_EQ(fluid::choose_time_step(limits, cfg, 1.0, 0, &t.f, {0.0}, 0.0, t.comm), 0.01);
+}

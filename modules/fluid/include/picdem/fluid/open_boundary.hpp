@@ -49,6 +49,9 @@ struct OpenBoundaries {
 
   bool any() const;
   bool any_inflow() const;
+  /// The largest speed an inflow side prescribes at time t [m/s] (0 without inflow): bounds the
+  /// time step, whose first step from rest the grid's velocities do not yet bound.
+  double max_inflow_speed(double t) const;
   /// The inward speed of an inflow face at `s` over the step: (S(t1) - S(t0)) / (t1 - t0), S the
   /// displacement (speed(s, t0) when t1 = t0): the grid carries exactly the injected volume.
   double face_speed(std::size_t side, double s) const;
