@@ -22,6 +22,17 @@
 //                                neighbour with f < 1: the solids' part of wet_cells - occupancy
 //   full_cells, full_cut_cells   cells holding particles/max_per_cell particles or more after
 //                                the step (trimming's candidates), and those of them with f < 1
+//   bulk                         sum of (1 - S) f h^2 over the cells with S > 1/2 whose eight
+//                                neighbours (those not covered by solids) have S > 1/2 too: the
+//                                bulk's share of wet_cells - occupancy, below 0 where the
+//                                particles are denser than seeded (PIC/FLIP's compression); the
+//                                rest of it, thinned - crowded - dry - bulk, is the surface band's
+//   near_volume, near_wet        the volume's part and wet_cells' part in those cells next to
+//                                solids (near_volume - near_wet: the sub-cell interpolation there)
+//   volume_after                 the volume with the solids where the step leaves them (X^{n+1}):
+//                                S corrected with their open share and the cells weighted by their
+//                                fluid fractions; the step's diagnostic uses the solids at X^n,
+//                                where the step started, with the particles at X^{n+1}
 // wet_cells = occupancy_area - crowded + thinned - dry exactly.
 #include <algorithm>
 #include <cstdio>
@@ -36,8 +47,10 @@
 #include "picdem/dem/scene.hpp"
 #include "picdem/fluid/bodies.hpp"
 #include "picdem/fluid/fluid_state.hpp"
+#include "picdem/fluid/free_surface.hpp"
 #include "picdem/fluid/pressure_solver.hpp"
 #include "picdem/grid/grid.hpp"
+#include "picdem/particles/occupancy_pass.hpp"
 #include "picdem/particles/particle_set.hpp"
 #include "water_at_t0.hpp"
 
@@ -47,8 +60,49 @@ namespace {
 
 struct Sums {
   double occupancy = 0, wet = 0, crowded = 0, thinned = 0, dry = 0, dry_isolated = 0, near = 0;
-  double full = 0, full_cut = 0;
+  double full = 0, full_cut = 0, near_wet = 0, bulk = 0;
 };
+
+// Cells with f < 1 or a neighbour with f < 1 (next to a solid; cells of the grid only).
+bool next_to_solid(const geometry::CutCells& cut, const core::IndexBox& on_grid, int i, int k) {
+  for (int b = -1; b <= 1; ++b)
+    for (int q = -1; q <= 1; ++q)
+      if (on_grid.contains(i + q, k + b) && cut.store.contains(i + q, k + b) &&
+          cut.fluid_fraction(i + q, k + b) < 1.0)
+        return true;
+  return false;
+}
+
+// The volume's part in the cells next to solids: the step's cut cells with the fluid fraction of
+// every other cell set to 0 (collective).
+double volume_next_to_solids(const grid::CellField& S, const grid::Decomposition& d,
+                             const core::Comm& comm, const geometry::CutCells& cut) {
+  geometry::CutCells near = cut;
+  const auto on_grid = d.spec().extent(grid::Stagger::Cell);
+  for (int k = cut.store.k0; k < cut.store.k1; ++k)
+    for (int i = cut.store.i0; i < cut.store.i1; ++i)
+      if (!next_to_solid(cut, on_grid, i, k))
+        near.fraction[static_cast<std::size_t>(k - cut.store.k0) *
+                          static_cast<std::size_t>(cut.store.nx()) +
+                      static_cast<std::size_t>(i - cut.store.i0)] = 0.0;
+  return fluid::occupied_area(S, d, comm, &near);
+}
+
+// The volume of the particles where the step left them with the solids where it left them
+// (X^{n+1}): S again, corrected with the new cut cells' open share (collective).
+double volume_after(const coupling::Simulation& sim, const grid::Decomposition& d,
+                    const particles::ParticleConfig& config, double tiny, const core::Comm& comm) {
+  const grid::Halo halo(d);
+  particles::OccupancyPass occ;
+  occ.update(sim.particles(), d, halo, config, false);
+  fluid::Apertures apertures = sim.fluid().apertures;
+  const dem::SolidScene scene = dem::scene_of(sim.dem(), sim.obstacles());
+  const geometry::CutCells cut =
+      fluid::cut_cells(scene.placements, scene.obstacles, tiny, d, apertures);
+  grid::CellField S = occ.S;
+  fluid::open_share_correction(S, cut, d);
+  return fluid::occupied_area(S, d, comm, &cut);
+}
 
 // Cells of this rank holding at least `most` particles, and those with a fluid fraction below 1.
 void full_cells(const particles::ParticleSet& ps, const grid::Decomposition& d,
@@ -85,16 +139,18 @@ Sums cell_sums(const grid::CellField& S, const grid::Decomposition& d,
   for (int k = own.k0; k < own.k1; ++k)
     for (int i = own.i0; i < own.i1; ++i) {
       const double f = frac(i, k), v = S(i, k);
-      bool wet_near = false, solid_near = f < 1.0;
+      bool wet_near = false, solid_near = f < 1.0, all_wet = true;
       for (int b = -1; b <= 1; ++b)
         for (int q = -1; q <= 1; ++q) {
           if (!ext.contains(i + q, k + b)) continue;
           wet_near = wet_near || S(i + q, k + b) > 0.5;
           solid_near = solid_near || frac(i + q, k + b) < 1.0;
+          all_wet = all_wet && (S(i + q, k + b) > 0.5 || frac(i + q, k + b) == 0.0);
         }
       s.occupancy += v * f * a;
       if (v > 0.5) {
         s.wet += f * a;
+        if (all_wet) s.bulk += (1.0 - v) * f * a;
         if (v > 1.0)
           s.crowded += (v - 1.0) * f * a;
         else
@@ -103,7 +159,10 @@ Sums cell_sums(const grid::CellField& S, const grid::Decomposition& d,
         s.dry += v * f * a;
         if (!wet_near) s.dry_isolated += v * f * a;
       }
-      if (solid_near) s.near += ((v > 0.5 ? 1.0 : 0.0) - v) * f * a;
+      if (solid_near) {
+        s.near += ((v > 0.5 ? 1.0 : 0.0) - v) * f * a;
+        if (v > 0.5) s.near_wet += f * a;
+      }
     }
   return s;
 }
@@ -141,7 +200,8 @@ int main(int argc, char** argv) {
   if (comm.is_root()) {
     out.open(argv[2]);
     out << "t,step,particles,added,removed,volume,particle_area,occupancy_area,wet_cells,crowded,"
-           "thinned,dry,dry_isolated,near_solid,full_cells,full_cut_cells\n";
+           "thinned,dry,dry_isolated,near_solid,full_cells,full_cut_cells,bulk,near_volume,"
+           "near_wet,volume_after\n";
   }
   long long last_count = comm.sum(static_cast<long long>(sim.particles().size()));
   while (sim.time() < end - 1e-12) {
@@ -164,9 +224,13 @@ int main(int argc, char** argv) {
     last_count = g.particles;
     Sums s = cell_sums(sim.fluid().occupancy, d, bodies ? &cut : nullptr);
     full_cells(sim.particles(), d, bodies ? &cut : nullptr, config.max_per_cell, s);
-    std::vector<double> v{s.occupancy,    s.wet,  s.crowded, s.thinned, s.dry,
-                          s.dry_isolated, s.near, s.full,    s.full_cut};
+    std::vector<double> v{s.occupancy, s.wet,  s.crowded,  s.thinned, s.dry,     s.dry_isolated,
+                          s.near,      s.full, s.full_cut, s.bulk,    s.near_wet};
     comm.sum_in_place(v);
+    const double near_volume =
+        bodies ? volume_next_to_solids(sim.fluid().occupancy, d, comm, cut) : 0.0;
+    v.insert(v.end() - 1, near_volume);  // near_volume, near_wet
+    v.push_back(bodies ? volume_after(sim, d, config, tiny, comm) : g.fluid_volume);
     if (comm.is_root()) {
       char row[512];
       std::snprintf(row, sizeof row, "%.9g,%lld,%lld,%lld,%lld,%.10e,%.10e", g.t, g.step,
