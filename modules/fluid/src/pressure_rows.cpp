@@ -87,7 +87,6 @@ void fluid_rows(const CellStates& cells, const Apertures& E, const grid::FaceFie
                 const grid::GridArray<signed char>* band) {
   const bool fixed = band != nullptr;
   const grid::GridSpec& g = d.spec();
-  const core::IndexBox own = d.owned_cells();
   rows.cells.clear(), rows.row.clear(), rows.col.clear(), rows.val.clear(), rows.rhs.clear();
   rows.with_solids = rows.low_rank = false;
   rows.fixed = fixed;
@@ -99,50 +98,48 @@ void fluid_rows(const CellStates& cells, const Apertures& E, const grid::FaceFie
   grid::CellField D(d, grid::Stagger::Cell, 0.0);
   divergence(u, w, E, cells, D);
   const double s = dt / (cfg.rho * g.h);
-  int next = 0;  // fixed: the rows in number_rows' order
-  for (int k = own.k0; k < own.k1; ++k)
-    for (int i = own.i0; i < own.i1; ++i) {
-      if (fixed ? (*band)(i, k) == 0 : row_of(i, k) < 0) continue;
-      const int r = fixed ? next++ : row_of(i, k);
-      const bool fluid = row_of(i, k) >= 0;
-      double diag = 0.0;
-      const struct {
-        double E, theta;
-        int i, k;
-      } faces[4] = {{E.E_x(i, k), surface ? surface->theta_x(i, k) : 1.0, i - 1, k},
-                    {E.E_x(i + 1, k), surface ? surface->theta_x(i + 1, k) : 1.0, i + 1, k},
-                    {E.E_z(i, k), surface ? surface->theta_z(i, k) : 1.0, i, k - 1},
-                    {E.E_z(i, k + 1), surface ? surface->theta_z(i, k + 1) : 1.0, i, k + 1}};
-      for (const auto& f : faces) {
-        const bool in_grid = f.i >= 0 && f.k >= 0 && f.i < g.nx && f.k < g.nz;
-        // fixed: the same columns at every solve, 0 where the cells are not coupled
-        const bool coupled = fluid && f.E > 0.0 && in_grid && cells(f.i, f.k) == kFluid;
-        if (fixed && in_grid && !coupled && (*band)(f.i, f.k) != 0)
-          rows.add(r, g.cell_gid(f.i, f.k), 0.0);
-        if (!fluid || f.E <= 0.0) continue;
-        if (!in_grid) {
-          // an open side (open_boundary.hpp): outflow p = 0 at theta h (the face: theta = 1/2
-          // with the ghost fluid), inflow a prescribed velocity (no term)
-          if (outflow_beyond(cfg.open, g, i, k, f.i, f.k)) diag += f.E * s / f.theta;
-          continue;
-        }
-        const signed char nb = cells(f.i, f.k);
-        if (nb == kSolid) continue;
-        // -L_E: diagonal sum_f E_f dt/(rho h); fluid neighbour -E_f dt/(rho h); air: p = 0
-        // at theta h (theta = 1: the air cell's centre), diagonal E_f dt/(rho h theta)
-        if (nb == kFluid) {
-          diag += f.E * s;
-          rows.add(r, g.cell_gid(f.i, f.k), -f.E * s);
-        } else {
-          diag += f.E * s / f.theta;
-        }
+  // The rows in number_rows' order (the owned cells k-major), visited without the other cells.
+  for (int r = 0; r < static_cast<int>(rows.cells.size()); ++r) {
+    const long long cell = rows.cells[static_cast<std::size_t>(r)];
+    const int i = static_cast<int>(cell % g.nx), k = static_cast<int>(cell / g.nx);
+    const bool fluid = row_of(i, k) >= 0;
+    double diag = 0.0;
+    const struct {
+      double E, theta;
+      int i, k;
+    } faces[4] = {{E.E_x(i, k), surface ? surface->theta_x(i, k) : 1.0, i - 1, k},
+                  {E.E_x(i + 1, k), surface ? surface->theta_x(i + 1, k) : 1.0, i + 1, k},
+                  {E.E_z(i, k), surface ? surface->theta_z(i, k) : 1.0, i, k - 1},
+                  {E.E_z(i, k + 1), surface ? surface->theta_z(i, k + 1) : 1.0, i, k + 1}};
+    for (const auto& f : faces) {
+      const bool in_grid = f.i >= 0 && f.k >= 0 && f.i < g.nx && f.k < g.nz;
+      // fixed: the same columns at every solve, 0 where the cells are not coupled
+      const bool coupled = fluid && f.E > 0.0 && in_grid && cells(f.i, f.k) == kFluid;
+      if (fixed && in_grid && !coupled && (*band)(f.i, f.k) != 0)
+        rows.add(r, g.cell_gid(f.i, f.k), 0.0);
+      if (!fluid || f.E <= 0.0) continue;
+      if (!in_grid) {
+        // an open side (open_boundary.hpp): outflow p = 0 at theta h (the face: theta = 1/2
+        // with the ghost fluid), inflow a prescribed velocity (no term)
+        if (outflow_beyond(cfg.open, g, i, k, f.i, f.k)) diag += f.E * s / f.theta;
+        continue;
       }
-      // identity row of a non-fluid cell (fixed): x = 0 with rhs 0
-      rows.add(r, g.cell_gid(i, k), fluid ? diag : 1.0);
-      // b = -D(u~)  (eq. 5 with the sign of -L_E)
-      if (fluid)
-        rows.rhs[static_cast<std::size_t>(r)] = -D(i, k) + (source ? (*source)(i, k) : 0.0);
+      const signed char nb = cells(f.i, f.k);
+      if (nb == kSolid) continue;
+      // -L_E: diagonal sum_f E_f dt/(rho h); fluid neighbour -E_f dt/(rho h); air: p = 0
+      // at theta h (theta = 1: the air cell's centre), diagonal E_f dt/(rho h theta)
+      if (nb == kFluid) {
+        diag += f.E * s;
+        rows.add(r, g.cell_gid(f.i, f.k), -f.E * s);
+      } else {
+        diag += f.E * s / f.theta;
+      }
     }
+    // identity row of a non-fluid cell (fixed): x = 0 with rhs 0
+    rows.add(r, g.cell_gid(i, k), fluid ? diag : 1.0);
+    // b = -D(u~)  (eq. 5 with the sign of -L_E)
+    if (fluid) rows.rhs[static_cast<std::size_t>(r)] = -D(i, k) + (source ? (*source)(i, k) : 0.0);
+  }
 }
 
 AssembledSystem assembled(const RowContributions& rows) {

@@ -164,7 +164,11 @@ RCP<OP> preconditioner(const detail::TpetraSystem& ts, const SolverSettings& set
     MueLu::HierarchyUtils<SC, LO, GO, NO>::AddNonSerializableDataToHierarchy(*made, *H, user);
     H->GetLevel(0)->Set("A", A);
     H->SetProcRankVerbose(comm->getRank());
-    made->SetupHierarchy(*H);
+    {
+      core::ScopedTimer hierarchy(settings.density ? "fluid: density preconditioner: hierarchy"
+                                                   : "fluid: pressure preconditioner: hierarchy");
+      made->SetupHierarchy(*H);
+    }
     return rcp(new MueLu::TpetraOperator<SC, LO, GO, NO>(H));
   } catch (const Teuchos::Exceptions::InvalidParameter& e) {
     throw core::InputError(std::string("solver/MueLu: MueLu rejected the settings: ") + e.what());
@@ -215,6 +219,8 @@ void run_cg(const detail::TpetraSystem& ts, const RCP<OP>& prec, const SolverSet
   Belos::PseudoBlockCGSolMgr<double, MV, OP> solver(problem, belos);
   for (int attempt = 0; attempt < 2; ++attempt) {
     try {
+      core::ScopedTimer iterations(settings.density ? "fluid: density solve: iterations"
+                                                    : "fluid: pressure solve: iterations");
       solver.solve();
     } catch (const Belos::BelosError& e) {
       // p^T A p <= 0 is a global reduction: every rank throws here alike

@@ -73,6 +73,56 @@ bool TpetraSystem::load(const RowContributions& rows, const std::vector<double>&
   return reuse;
 }
 
+/// U on the assembly rows from local CSR arrays, with the column map and the order in each row
+/// that fillComplete gives a matrix filled by insertGlobalValues (the unknowns this rank owns in
+/// solid_map ascending, then the others ascending; each row sorted by column, duplicates summed),
+/// so the same matrix, without an insertion per entry and fillComplete's search for the columns.
+RCP<TpetraSystem::Matrix> TpetraSystem::u_on_assembly_rows(const RowContributions& rows,
+                                                           const RCP<const Map>& solid_map) const {
+  const auto n_asm = static_cast<std::size_t>(asm_map_->getNodeNumElements());
+  std::vector<GO> cols(rows.u_col.begin(), rows.u_col.end());
+  std::sort(cols.begin(), cols.end());
+  cols.erase(std::unique(cols.begin(), cols.end()), cols.end());
+  std::stable_partition(cols.begin(), cols.end(),
+                        [&](GO g) { return solid_map->isNodeGlobalElement(g); });
+  std::vector<LO> lid_of(rows.weight.size(), -1);
+  for (std::size_t l = 0; l < cols.size(); ++l)
+    lid_of[static_cast<std::size_t>(cols[l])] = static_cast<LO>(l);
+  // Entries bucketed by row in entry order, each row sorted by column (stable), duplicates summed.
+  std::vector<std::size_t> ptr(n_asm + 1, 0);
+  for (int r : rows.u_row) ++ptr[static_cast<std::size_t>(r) + 1];
+  for (std::size_t r = 0; r < n_asm; ++r) ptr[r + 1] += ptr[r];
+  std::vector<std::pair<LO, double>> e(rows.u_row.size());
+  {
+    std::vector<std::size_t> next(ptr.begin(), ptr.begin() + static_cast<std::ptrdiff_t>(n_asm));
+    for (std::size_t m = 0; m < rows.u_row.size(); ++m)
+      e[next[static_cast<std::size_t>(rows.u_row[m])]++] = {
+          lid_of[static_cast<std::size_t>(rows.u_col[m])], rows.u_val[m]};
+  }
+  Teuchos::ArrayRCP<std::size_t> row_ptr(n_asm + 1, 0);
+  std::size_t nnz = 0;
+  for (std::size_t r = 0; r < n_asm; ++r) {
+    const auto b = e.begin() + static_cast<std::ptrdiff_t>(ptr[r]);
+    const auto end = e.begin() + static_cast<std::ptrdiff_t>(ptr[r + 1]);
+    std::stable_sort(b, end, [](const auto& x, const auto& y) { return x.first < y.first; });
+    for (auto it = b; it != end; ++it)
+      if (nnz > row_ptr[r] && e[nnz - 1].first == it->first)
+        e[nnz - 1].second += it->second;
+      else
+        e[nnz++] = *it;
+    row_ptr[r + 1] = nnz;
+  }
+  Teuchos::ArrayRCP<LO> idx(nnz);
+  Teuchos::ArrayRCP<double> val(nnz);
+  for (std::size_t m = 0; m < nnz; ++m) idx[m] = e[m].first, val[m] = e[m].second;
+  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+  RCP<const Map> col_map =
+      rcp(new Map(invalid, Teuchos::ArrayView<const GO>(cols.data(), cols.size()), 0, tcomm_));
+  RCP<Matrix> U = rcp(new Matrix(asm_map_, col_map, row_ptr, idx, val));
+  U->expertStaticFillComplete(solid_map, asm_map_);
+  return U;
+}
+
 /// U from its entries on the assembly rows (columns: the 3 per solid unknowns, split evenly over
 /// the ranks), moved to the solve rows with the rows' Export; W and diag(U W U^T) likewise.
 void TpetraSystem::build_low_rank(const RowContributions& rows) {
@@ -80,16 +130,7 @@ void TpetraSystem::build_low_rank(const RowContributions& rows) {
   const auto n_asm = static_cast<std::size_t>(asm_map_->getNodeNumElements());
   RCP<const Map> solid_map =
       rcp(new Map(static_cast<Tpetra::global_size_t>(rows.weight.size()), 0, tcomm_));
-  std::vector<std::size_t> count(n_asm, 0);
-  for (int r : rows.u_row) ++count[static_cast<std::size_t>(r)];
-  RCP<Matrix> U_asm =
-      rcp(new Matrix(asm_map_, Teuchos::ArrayView<const std::size_t>(count.data(), n_asm)));
-  for (std::size_t e = 0; e < rows.u_row.size(); ++e) {
-    const GO row = offset_ + rows.u_row[e], col = rows.u_col[e];
-    U_asm->insertGlobalValues(row, Teuchos::ArrayView<const GO>(&col, 1),
-                              Teuchos::ArrayView<const double>(&rows.u_val[e], 1));
-  }
-  U_asm->fillComplete(solid_map, asm_map_);
+  RCP<Matrix> U_asm = u_on_assembly_rows(rows, solid_map);
   RCP<Vec> w = rcp(new Vec(solid_map));
   {
     auto v = w->getDataNonConst();
@@ -225,6 +266,12 @@ std::vector<TpetraSystem::GO> TpetraSystem::column_gids(const RowContributions& 
     if (owned_lid(c) < 0) remote.push_back(c);
   std::sort(remote.begin(), remote.end());
   remote.erase(std::unique(remote.begin(), remote.end()), remote.end());
+  std::vector<GO> gid(rows.col.size());
+  // Every column owned here on every rank (one rank): no map of the cell ids to ask.
+  if (!d.comm().any(!remote.empty())) {
+    for (std::size_t c = 0; c < rows.col.size(); ++c) gid[c] = offset_ + owned_lid(rows.col[c]);
+    return gid;
+  }
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
   std::vector<GO> cell_ids(rows.cells.begin(), rows.cells.end());
   const Map cell_map(invalid, Teuchos::ArrayView<const GO>(cell_ids.data(), cell_ids.size()), 0,
@@ -241,7 +288,6 @@ std::vector<TpetraSystem::GO> TpetraSystem::column_gids(const RowContributions& 
                               " is not a fluid cell on any rank");
     remote_gid[m] = static_cast<GO>(offsets[static_cast<std::size_t>(pids[m])]) + lids[m];
   }
-  std::vector<GO> gid(rows.col.size());
   for (std::size_t c = 0; c < rows.col.size(); ++c) {
     const int lid = owned_lid(rows.col[c]);
     gid[c] =
@@ -289,7 +335,14 @@ void TpetraSystem::build_source(const RowContributions& rows, const std::vector<
   for (std::size_t r = 0; r < static_cast<std::size_t>(n); ++r) {
     const auto b = order.begin() + static_cast<std::ptrdiff_t>(first[r]);
     const auto e = order.begin() + static_cast<std::ptrdiff_t>(first[r + 1]);
-    std::stable_sort(b, e, [&](std::size_t x, std::size_t y) { return lid[x] < lid[y]; });
+    // A fluid row holds at most 5 contributions: std::stable_sort's buffer (an allocation per
+    // row) cost more than the sorting there, so short rows take a stable insertion sort (the
+    // same order, so the same sums); long ones (an assembled solid block) std::stable_sort.
+    if (e - b > 16)
+      std::stable_sort(b, e, [&](std::size_t x, std::size_t y) { return lid[x] < lid[y]; });
+    else
+      for (auto it = b; it != e; ++it)
+        for (auto at = it; at != b && lid[*(at - 1)] > lid[*at]; --at) std::iter_swap(at - 1, at);
     for (auto it = b; it != e; ++it) {
       if (it == b || lid[*(it - 1)] != lid[*it]) cols.push_back(lid[*it]);
       pos_[*it] = cols.size() - 1;

@@ -79,6 +79,8 @@ class TpetraSystem {
   void fill_values(const RowContributions& rows);
   void fill_vectors(const RowContributions& rows, const std::vector<double>& x0);
   void build_low_rank(const RowContributions& rows);
+  Teuchos::RCP<Matrix> u_on_assembly_rows(const RowContributions& rows,
+                                          const Teuchos::RCP<const Map>& solid_map) const;
 
   bool built_ = false, rebalance_ = false, fixed_ = false;
   long long nx_ = 0;
