@@ -38,6 +38,22 @@ double dem_time_step(const DemConfig& cfg) {
   return 2.0 * 3.141592653589793 / cfg.gamma * std::sqrt(cfg.theta * cfg.h / cfg.g_stiffness);
 }
 
+double damped_step_limit(const DemConfig& cfg, double mass_ratio) {
+  // the lightest pair of the case, two solids of m_min (m* = m_min / 2) under k_xi = m_max ||g||
+  // / (theta dx): omega_n^2 = k_xi / m* = 2 (m_max / m_min) ||g|| / (theta dx), zeta_n =
+  // c_xi / (2 sqrt(m* k_xi)) = sqrt(2) alpha (the paper's equal pair; a wall pair is slower and
+  // less damped). Its tangential mode with the disks' rotation (|b_t|^2 = 3 |b_n|^2 for
+  // I = m R^2 / 2): omega_t = omega_n sqrt(3 / (2 (1 + psi))), zeta_t = sqrt(3) zeta_n.
+  const double w_n = std::sqrt(2.0 * mass_ratio * cfg.g_stiffness / (cfg.theta * cfg.h));
+  const double z_n = std::sqrt(2.0) * cfg.alpha;
+  const double w_t = w_n * std::sqrt(3.0 / (2.0 * (1.0 + cfg.psi))), z_t = std::sqrt(3.0) * z_n;
+  // eqs. 21-24 on x'' = -omega^2 x - 2 zeta omega x' are stable for
+  // omega dt < 2 (sqrt(1 + zeta^2) - zeta) = 2 / (sqrt(1 + zeta^2) + zeta) (doc/dem.md, "Damped
+  // time step"; the second form does not cancel at large zeta)
+  const auto limit = [](double w, double z) { return 2.0 / ((std::hypot(1.0, z) + z) * w); };
+  return kDampedStepShare * std::min(limit(w_n, z_n), limit(w_t, z_t));
+}
+
 ContactForce contact_force(const DemConfig& cfg, const ContactCoefficients& k,
                            const ContactKinematics& c, const BodyMotion& a, const BodyMotion& b,
                            double spring, double dt) {
@@ -113,8 +129,11 @@ class LinearSpringDashpot final : public ContactLaw {
   double time_step(double m_min, double m_max) const override {
     // eq. 18 for the pair that needs the smallest step, the two lightest solids (or the lightest
     // at a wall) under k = m_max ||g|| / (theta dx): dt_paper sqrt(m_min / m_max)
-    if (!(m_min > 0.0) || m_min == m_max) return dt_;
-    return dt_ * std::sqrt(m_min / m_max);
+    const bool equal = !(m_min > 0.0) || m_min == m_max;
+    const double paper = equal ? dt_ : dt_ * std::sqrt(m_min / m_max);
+    const double ratio = equal ? 1.0 : m_max / m_min;
+    // eq. 18 ignores the dashpot: the smaller of it and the damped limit (doc/dem.md)
+    return std::min(paper, damped_step_limit(cfg_, ratio));
   }
 
   ContactLawPtr for_masses(double, double m_max) const override {

@@ -403,7 +403,8 @@ void DemSolver::advance(double dt, const std::vector<SolidLoads>& fluid_loads) {
     std::ostringstream m;
     m << "DemSolver::advance: dt = " << dt << " s needs " << cycles
       << " subcycles of dt_DEM = " << dt_dem_ << " s, more than " << std::numeric_limits<int>::max()
-      << "; lower time/dt_max";
+      << "; lower time/dt_max (dt_DEM is eq. 18's step or, with a large dem/alpha, the damped "
+         "stability limit: doc/dem.md)";
     throw core::SolverError(m.str());
   }
   const int K = std::max(1, static_cast<int>(cycles));

@@ -97,6 +97,16 @@ ContactCoefficients scaled(const ContactCoefficients& unit, double m_ij);
 /// 2 pi / gamma sqrt(m / k) = 2 pi / gamma sqrt(theta h / |g|).
 double dem_time_step(const DemConfig& cfg);
 
+/// The share of the damped stability limit that damped_step_limit takes: a body with several
+/// contacts has faster modes than one pair (doc/dem.md, "Damped time step").
+constexpr double kDampedStepShare = 0.25;
+
+/// The largest stable dt_DEM of eqs. 21-24 for the damped spring of the case's lightest pair of
+/// solids, normal and tangential-rotational modes of disks, when the heaviest solid is
+/// `mass_ratio` times as heavy, times kDampedStepShare (doc/dem.md, "Damped time step"). The
+/// paper's law takes the smaller of it and eq. 18; at the default alpha eq. 18 is smaller.
+double damped_step_limit(const DemConfig& cfg, double mass_ratio);
+
 /// Eqs. 7, 8, 15 for body a (see ContactLaw::force).
 ContactForce contact_force(const DemConfig& cfg, const ContactCoefficients& k,
                            const ContactKinematics& c, const BodyMotion& a, const BodyMotion& b,
