@@ -10,14 +10,19 @@ namespace picdem::geometry {
 
 std::vector<BoundaryPiece> world_boundary(const Shape& shape, const Pose& pose) {
   std::vector<BoundaryPiece> b = shape.boundary();
+  // A solid turned a million radians and more (or spun up by a blown-up run) has its arcs' angles
+  // reduced to one turn: beyond, phi0 + theta and phi1 + theta lose the arc's span to round-off
+  // (at 1e20 a whole circle's arc had none). Below, the angles are added as they are.
+  const double turn =
+      std::abs(pose.theta) > 1e6 ? std::remainder(pose.theta, 2.0 * M_PI) : pose.theta;
   for (auto& piece : b) {
     if (auto* s = std::get_if<Segment>(&piece)) {
       *s = {pose.to_world(s->a), pose.to_world(s->b)};
     } else {
       auto& a = std::get<Arc>(piece);
       a.centre = pose.to_world(a.centre);
-      a.phi0 += pose.theta;
-      a.phi1 += pose.theta;
+      a.phi0 += turn;
+      a.phi1 += turn;
     }
   }
   return b;
@@ -63,6 +68,8 @@ Box2 bounding_box(const Shape& shape, const Pose& pose) {
       const auto& a = std::get<Arc>(piece);
       add(a.centre + a.radius * Vec2{std::cos(a.phi0), std::sin(a.phi0)});
       add(a.centre + a.radius * Vec2{std::cos(a.phi1), std::sin(a.phi1)});
+      // a pose no longer finite (a blown-up run) has no place: no box, and no endless loop below
+      if (!std::isfinite(a.phi0) || !std::isfinite(a.phi1)) continue;
       // Extreme points at multiples of pi/2 inside [phi0, phi1].
       for (int q = static_cast<int>(std::ceil(a.phi0 / (M_PI / 2))); q * (M_PI / 2) <= a.phi1;
            ++q) {

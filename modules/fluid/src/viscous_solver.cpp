@@ -54,6 +54,31 @@ void declare_viscous_solver_parameters(core::ParamSchema& schema) {
   schema.passthrough("viscous_solver/MueLu", kViscousMueLuDefaults,
                      "settings handed to MueLu::CreateTpetraPreconditioner (no coordinates: "
                      "MueLu's defaults otherwise, smoothed aggregation)");
+  // A viscosity no step can carry: the explicit limit h^2 / (4 nu) below time/dt_min, or an
+  // implicit viscous number nu dt_max / h^2 above 1e12, where the system's mass term h^2 / (nu dt)
+  // falls to round-off against its Laplacian and the solve returns noise (a mistyped value, or a
+  // dynamic viscosity in Pa s where the key takes m^2/s).
+  schema.check([](const core::Params& params, std::vector<std::string>& errors) {
+    for (const char* key : {"grid/cell_size", "fluid/viscosity", "time/dt_max", "time/dt_min"})
+      if (!params.has(key)) return;  // a schema without the fluid or the grid (unit tests)
+    const double nu = params.real("fluid/viscosity"), h = params.real("grid/cell_size");
+    if (!(nu > 0.0)) return;
+    std::ostringstream e;
+    if (params.string("fluid/viscosity_scheme") == "explicit") {
+      if (viscous_time_step(h, nu) < params.real("time/dt_min"))
+        e << "key 'fluid/viscosity' = " << nu << " m^2/s: the explicit scheme's stable step h^2 / "
+          << "(4 nu) = " << viscous_time_step(h, nu)
+          << " s is below time/dt_min = " << params.real("time/dt_min")
+          << " s; allowed: nu <= h^2 / (4 dt_min) = " << h * h / (4.0 * params.real("time/dt_min"))
+          << " m^2/s, or fluid/viscosity_scheme implicit";
+    } else if (nu * params.real("time/dt_max") / (h * h) > 1e12) {
+      e << "key 'fluid/viscosity' = " << nu << " m^2/s: the viscous number nu dt / h^2 at "
+        << "time/dt_max is " << nu * params.real("time/dt_max") / (h * h)
+        << ", beyond which the implicit solve's mass term is lost to round-off; allowed: "
+        << "nu time/dt_max / grid/cell_size^2 <= 1e12 (is the viscosity in m^2/s?)";
+    }
+    if (!e.str().empty()) errors.push_back(e.str());
+  });
 }
 
 ViscousSolverSettings viscous_solver_settings_from(const core::Params& params) {

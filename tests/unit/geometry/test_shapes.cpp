@@ -130,6 +130,20 @@ TEST(Outline, BoundingBox) {
   EXPECT_NEAR(b.hi.x, 3.0, 1e-14);
   EXPECT_NEAR(b.lo.z, -3.0, 1e-14);
   EXPECT_NEAR(b.hi.z, 1.0, 1e-14);
+  // a disk turned 1e12 times and by +-1e20 rad (its arc lost its span to round-off and the
+  // quarter-turn count overflowed int: the box was wrong or never returned): the same box
+  for (double angle : {2e12 * M_PI + 0.3, 1e20, -1e20}) {
+    const auto t = bounding_box(c, {{1.0, -1.0}, angle});
+    EXPECT_NEAR(t.lo.x, -1.0, 1e-14) << angle;
+    EXPECT_NEAR(t.hi.x, 3.0, 1e-14) << angle;
+    EXPECT_NEAR(t.lo.z, -3.0, 1e-14) << angle;
+    EXPECT_NEAR(t.hi.z, 1.0, 1e-14) << angle;
+  }
+  // an angle no longer finite: an empty box (lo above hi), returned
+  for (double angle : {double(INFINITY), double(NAN)}) {
+    const auto t = bounding_box(c, {{1.0, -1.0}, angle});
+    EXPECT_FALSE(t.lo.x <= t.hi.x) << angle;
+  }
   const Polygon sq({{-1, -1}, {1, -1}, {1, 1}, {-1, 1}});
   const auto bs = bounding_box(sq, {{0, 0}, M_PI / 4});
   EXPECT_NEAR(bs.hi.x, std::sqrt(2.0), 1e-14);
