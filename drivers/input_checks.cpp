@@ -140,6 +140,9 @@ the value and what is allowed, when:
 - an obstacle reaches farther from the tank than the tank's own length (in x) or height (in z),
   the mark of a mistyped size (a fall pipe's `wall_thickness` or `funnel_height` of 1e30, which
   would also hide every overlap below in round-off); the message names the obstacle's entry;
+- `fluid/viscosity` is more than any step can carry: with the explicit scheme its stable step
+  h^2 / (4 nu) is below `time/dt_min`; with the implicit ones the viscous number
+  nu `time/dt_max` / h^2 exceeds 1e12, where the solve's mass term is lost to round-off;
 - water regions reach outside the tank or are empty;
 - `solver/Belos`, `solver/MueLu` (and the lists merged from `solver/MueLu_solids`,
   `solver/MueLu_one_level`), or the implicit viscous solve's `viscous_solver/Belos`,
