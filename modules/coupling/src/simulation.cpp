@@ -11,6 +11,7 @@
 #include "picdem/coupling/solids_in_fluid.hpp"
 #include "picdem/dem/dem_solver.hpp"
 #include "picdem/dem/parameters.hpp"
+#include "picdem/fluid/bodies.hpp"
 #include "picdem/fluid/fluid.hpp"
 #include "picdem/fluid/fluid_state.hpp"
 #include "picdem/fluid/open_flow.hpp"
@@ -161,7 +162,8 @@ void Simulation::step() {
       fluid::choose_time_step(set.time, set.fluid, m.t, m.step, fluid, motion, m.last_dt, m.comm);
   m.set.fluid.open.t0 = m.t, m.set.fluid.open.t1 = m.t + dt;  // the inflows over this step
   fluid::OpenFluxes open_flux;
-  SolidsAtStart solids;  // at X^n
+  SolidsAtStart solids;          // at X^n
+  geometry::CutCells cut_after;  // moving solids: at X^{n+1}, for the diagnostics' fluid volume
   fluid::SolveStats solve;
   double advected = 0.0;
   if (fluid) {
@@ -188,6 +190,12 @@ void Simulation::step() {
     const dem::SolidScene after = dem::scene_of(m.dem.get(), m.obstacles);  // solids at X^{n+1}
     grid_to_particles(L, set, solids, after, m.dem.get(), m.fluid, m.particles);  // transfer
     advected = advect_particles(L, set, m.step, solids.cut, after, dt, m.fluid, m.particles);
+    if (m.dem) {  // the water where the particles are now, less the solids where they are now
+      core::ScopedTimer timer("geometry: cut cells at X^n+1");
+      fluid::Apertures unused = m.fluid.apertures;
+      cut_after =
+          fluid::cut_cells(after.placements, after.obstacles, set.tiny_fraction, L.d, unused);
+    }
   } else if (m.dem) {
     m.fluid_loads = advance_solids(nullptr, nullptr, dt, {}, *m.dem);  // dry: solids only
   }
@@ -197,8 +205,11 @@ void Simulation::step() {
   std::vector<double> volumes = m.diag.open_volumes;
   if (volumes.size() == 2)
     volumes[0] += dt * open_flux.inflow, volumes[1] += dt * open_flux.outflow;
+  const geometry::CutCells* cut = !fluid || !set.has_bodies ? nullptr
+                                  : m.dem                   ? &cut_after
+                                                            : &solids.cut;  // obstacles stay
   m.diag = record_diagnostics(L, set, m.t, m.step, dt, advected, solve, m.particles, m.dem.get(),
-                              fluid ? &solids : nullptr, m.occupancy, fluid);
+                              cut, m.occupancy, fluid);
   m.diag.open_volumes = volumes;
 }
 

@@ -278,7 +278,7 @@ double advect_particles(const Layout& L, const StepSettings& set, long long step
 Diagnostics record_diagnostics(const Layout& L, const StepSettings& set, double t, long long step,
                                double dt, double advected, const fluid::SolveStats& solve,
                                const particles::ParticleSet& P, const dem::DemSolver* dem,
-                               const SolidsAtStart* solids, particles::OccupancyPass& occ,
+                               const geometry::CutCells* cut, particles::OccupancyPass& occ,
                                fluid::FluidState* fluid) {
   const core::Comm& comm = L.comm;
   Diagnostics g;
@@ -306,7 +306,6 @@ Diagnostics record_diagnostics(const Layout& L, const StepSettings& set, double 
     // sums when the particles stay unmoved
     occ.update(P, L.d, L.halo, set.particles, !set.surface.corrects_density(step));
     fluid->occupancy = occ.S;
-    const geometry::CutCells* cut = set.has_bodies ? &solids->cut : nullptr;
     if (cut) fluid::open_share_correction(fluid->occupancy, *cut, L.d);
     g.fluid_volume = fluid::occupied_area(fluid->occupancy, L.d, comm, cut);
   }

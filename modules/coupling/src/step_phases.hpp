@@ -135,12 +135,14 @@ double advect_particles(const Layout& L, const StepSettings& set, long long step
                         const fluid::FluidState& fluid, particles::ParticleSet& particles);
 
 /// Figures of the state after the step (t, step: its end); a non-finite particle or solid
-/// anywhere stops the run on every rank. fluid/solids: nullptr without water. The occupancy of
-/// the particles is left in `occ` for the next step. advected: advect_particles'.
+/// anywhere stops the run on every rank. fluid: nullptr without water; cut: the cut cells of the
+/// bodies where the step leaves them (X^{n+1}), nullptr without bodies or water: the fluid volume
+/// weights the particles' occupancy with them. The occupancy of the particles is left in `occ`
+/// for the next step. advected: advect_particles'.
 Diagnostics record_diagnostics(const Layout& L, const StepSettings& set, double t, long long step,
                                double dt, double advected, const fluid::SolveStats& solve,
                                const particles::ParticleSet& particles, const dem::DemSolver* dem,
-                               const SolidsAtStart* solids, particles::OccupancyPass& occ,
+                               const geometry::CutCells* cut, particles::OccupancyPass& occ,
                                fluid::FluidState* fluid);
 
 }  // namespace picdem::coupling

@@ -29,10 +29,11 @@
 //                                rest of it, thinned - crowded - dry - bulk, is the surface band's
 //   near_volume, near_wet        the volume's part and wet_cells' part in those cells next to
 //                                solids (near_volume - near_wet: the sub-cell interpolation there)
-//   volume_after                 the volume with the solids where the step leaves them (X^{n+1}):
-//                                S corrected with their open share and the cells weighted by their
-//                                fluid fractions; the step's diagnostic uses the solids at X^n,
-//                                where the step started, with the particles at X^{n+1}
+//   volume_after                 the volume recomputed here from the particles and the solids
+//                                where the step leaves them (X^{n+1}): S, its open share
+//                                correction and the fluid fractions of their cut cells; equal to
+//                                volume since the diagnostic weights with X^{n+1} too (until
+//                                issue 14's fix it used the solids at X^n, where the step started)
 // wet_cells = occupancy_area - crowded + thinned - dry exactly.
 #include <algorithm>
 #include <cstdio>
@@ -205,7 +206,9 @@ int main(int argc, char** argv) {
   }
   long long last_count = comm.sum(static_cast<long long>(sim.particles().size()));
   while (sim.time() < end - 1e-12) {
-    // the cut cells of the solids at X^n, as the step's diagnostic reads them
+    const long long reseed_step = sim.step_count();
+    sim.step();
+    // the cut cells of the solids where the step leaves them, as the step's diagnostic reads them
     const bool bodies = sim.dem() != nullptr || !sim.obstacles().empty();
     geometry::CutCells cut;
     if (bodies) {
@@ -213,8 +216,6 @@ int main(int argc, char** argv) {
       const dem::SolidScene scene = dem::scene_of(sim.dem(), sim.obstacles());
       cut = fluid::cut_cells(scene.placements, scene.obstacles, tiny, d, apertures);
     }
-    const long long reseed_step = sim.step_count();
-    sim.step();
     const auto& g = sim.diagnostics();
     long long added = 0;
     for (const auto id : sim.particles().id)
