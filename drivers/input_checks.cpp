@@ -87,15 +87,6 @@ void check_memory(const core::Comm& comm, const core::Params& params,
 
 }  // namespace
 
-void declare_check_parameters(core::ParamSchema& schema) {
-  schema.section("run", "Checks made before the run (doc/cases.md).");
-  schema
-      .real("run/memory_limit_gb", 0.0,
-            "memory a rank may use [GB]; a case whose estimate exceeds it is refused "
-            "(0: MemTotal of /proc/meminfo divided by the ranks on the node)")
-      .non_negative();
-}
-
 double memory_estimate_bytes(const core::Params& params, int ranks) {
   const double h = params.real("grid/cell_size");
   const double cells = params.real("grid/length") / h * (params.real("grid/height") / h);

@@ -9,9 +9,6 @@
 
 namespace picdem::driver {
 
-/// Declares run/memory_limit_gb on the case schema.
-void declare_check_parameters(core::ParamSchema& schema);
-
 /// Memory a rank needs for the grid fields, the pressure system and the particles [bytes]: an
 /// estimate from the cell count, the water's area, particles/per_cell_1d and the number of
 /// ranks, with the per-cell and per-particle sizes measured on this code (doc/cases.md).

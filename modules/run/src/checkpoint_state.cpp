@@ -10,12 +10,12 @@
 
 #include "picdem/core/error.hpp"
 #include "picdem/core/timer.hpp"
-#include "picdem/coupling/schema.hpp"
 #include "picdem/dem/checkpoint.hpp"
 #include "picdem/fluid/checkpoint.hpp"
 #include "picdem/io/checkpoint_files.hpp"
 #include "picdem/io/checkpoint_grid.hpp"
 #include "picdem/particles/checkpoint.hpp"
+#include "picdem/run/run.hpp"
 
 namespace picdem::run {
 
@@ -91,7 +91,7 @@ CheckpointHeader read_header(const io::CheckpointReader& in, const CheckpointPar
                            "); this picdem (" + io::code_version() + ") reads version " +
                            std::to_string(io::kCheckpointFormatVersion));
   const auto diff =
-      io::case_differences(in.attribute_string("case_yaml"), parts.params, coupling::case_schema());
+      io::case_differences(in.attribute_string("case_yaml"), parts.params, run::case_schema());
   if (!diff.empty()) {
     std::string m = where + " belongs to another case; these keys differ (checkpoint -> now):";
     for (const auto& d : diff) m += "\n  " + d;

@@ -4,10 +4,22 @@
 
 #include "picdem/core/log.hpp"
 #include "picdem/core/timer.hpp"
+#include "picdem/coupling/schema.hpp"
 #include "picdem/io/checkpoint_grid.hpp"
 #include "picdem/run/output.hpp"
 
 namespace picdem::run {
+
+core::ParamSchema case_schema() {
+  core::ParamSchema schema = coupling::case_schema();
+  schema.section("run", "Checks made before the run (doc/parameters.md).");
+  schema
+      .real("run/memory_limit_gb", 0.0,
+            "memory a rank may use [GB]; a case whose estimate exceeds it is refused "
+            "(0: MemTotal of /proc/meminfo divided by the ranks on the node)")
+      .non_negative();
+  return schema;
+}
 
 Run::Run(coupling::Simulation& sim) : sim_(sim) {}
 

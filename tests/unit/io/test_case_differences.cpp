@@ -10,8 +10,8 @@
 
 #include "picdem/core/comm.hpp"
 #include "picdem/core/params.hpp"
-#include "picdem/coupling/schema.hpp"
 #include "picdem/io/checkpoint_files.hpp"
+#include "picdem/run/run.hpp"
 
 namespace {
 
@@ -20,9 +20,12 @@ using picdem::core::Params;
 
 const std::string kCase = "cases/dam_break/case.yaml";
 
+// The schema picdem reads case files with, which restart resolves the checkpoint's case by (with
+// coupling::case_schema alone the run section the executable writes made every stored case
+// unresolvable, so a key declared since a checkpoint was reported as a change).
 Params load(const std::string& relative, const std::vector<std::string>& overrides = {}) {
   return picdem::core::read_case(Comm(), std::string(PICDEM_SOURCE_DIR) + "/" + relative, overrides,
-                                 picdem::coupling::case_schema());
+                                 picdem::run::case_schema());
 }
 
 // The written case without the line of `key` (a leaf "name: value" under its section), as an
@@ -37,7 +40,7 @@ std::string without_key(const std::string& yaml, const std::string& leaf) {
 }
 
 TEST(CaseDifferences, EveryShippedCaseMatchesItselfAfterWritingAndResolvingAgain) {
-  const auto schema = picdem::coupling::case_schema();
+  const auto schema = picdem::run::case_schema();
   int cases = 0;
   for (const auto& dir :
        std::filesystem::directory_iterator(std::string(PICDEM_SOURCE_DIR) + "/cases")) {
@@ -57,14 +60,14 @@ TEST(CaseDifferences, EveryShippedCaseMatchesItselfAfterWritingAndResolvingAgain
 }
 
 TEST(CaseDifferences, AKeyDeclaredSinceTheCheckpointCountsAsItsDefault) {
-  const auto schema = picdem::coupling::case_schema();
+  const auto schema = picdem::run::case_schema();
   const Params now = load(kCase);
   const std::string older = without_key(now.to_yaml(), "viscous_pressure_predictor");
   EXPECT_TRUE(picdem::io::case_differences(older, now, schema).empty());
 }
 
 TEST(CaseDifferences, AKeyDeclaredSinceTheCheckpointButSetOtherwiseIsReported) {
-  const auto schema = picdem::coupling::case_schema();
+  const auto schema = picdem::run::case_schema();
   const std::string older = without_key(load(kCase).to_yaml(), "viscous_pressure_predictor");
   const Params now = load(kCase, {"fluid/viscous_pressure_predictor=true"});
   const auto diff = picdem::io::case_differences(older, now, schema);
@@ -73,7 +76,7 @@ TEST(CaseDifferences, AKeyDeclaredSinceTheCheckpointButSetOtherwiseIsReported) {
 }
 
 TEST(CaseDifferences, AKeyThisPicdemNoLongerKnowsIsReported) {
-  const auto schema = picdem::coupling::case_schema();
+  const auto schema = picdem::run::case_schema();
   const Params now = load(kCase);
   std::string yaml = now.to_yaml();
   const auto at = yaml.find("\n  fluid:");  // the section's line; its keys are indented by 4
@@ -85,7 +88,7 @@ TEST(CaseDifferences, AKeyThisPicdemNoLongerKnowsIsReported) {
 }
 
 TEST(CaseDifferences, ACaseValueChangedIsReported) {
-  const auto schema = picdem::coupling::case_schema();
+  const auto schema = picdem::run::case_schema();
   const std::string stored = load(kCase).to_yaml();
   const auto diff =
       picdem::io::case_differences(stored, load(kCase, {"fluid/density=1100"}), schema);

@@ -10,6 +10,11 @@
 
 namespace picdem::run {
 
+/// The schema of a case file as `picdem` reads it: the coupled simulation's keys
+/// (coupling::case_schema) and the run section (run/memory_limit_gb, read by the checks before
+/// the run). A checkpoint's case is resolved again with this same schema on restart.
+core::ParamSchema case_schema();
+
 class Output;
 
 class Run {
