@@ -192,8 +192,17 @@ std::vector<std::string> case_differences(const std::string& stored_yaml,
   } catch (const core::InputError&) {
     // compared as written: the differences name the keys this picdem no longer accepts
   }
+  // The current case through the same schema: a section the caller's Params lack (built with
+  // fewer keys than `schema`, e.g. coupling's schema without the run section) takes its defaults,
+  // as the stored case's missing keys do.
+  std::string now = current.to_yaml();
+  try {
+    now = core::resolve_written_case(now, "the current case", schema).to_yaml();
+  } catch (const core::InputError&) {
+    // compared as it is
+  }
   const auto a = flat_case(stored, "the checkpoint's case");
-  const auto b = flat_case(current.to_yaml(), "the current case");
+  const auto b = flat_case(now, "the current case");
   std::vector<std::string> diff;
   auto note = [&](const std::string& key, const std::string& x, const std::string& y) {
     if (!key_may_change_on_restart(key)) diff.push_back(key + ": " + x + " -> " + y);

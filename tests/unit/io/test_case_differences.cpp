@@ -10,6 +10,7 @@
 
 #include "picdem/core/comm.hpp"
 #include "picdem/core/params.hpp"
+#include "picdem/coupling/schema.hpp"
 #include "picdem/io/checkpoint_files.hpp"
 #include "picdem/run/run.hpp"
 
@@ -97,3 +98,12 @@ TEST(CaseDifferences, ACaseValueChangedIsReported) {
 }
 
 }  // namespace
+
+// A simulation set up from coupling's schema alone (the tests' and library users' way: no run
+// section) restarts from its own checkpoint: the restart resolves both cases with picdem's schema,
+// so the run section's default is on both sides (test_mpi_work_decomposition hung on this).
+TEST(CaseDifferences, ACaseWithoutTheRunSectionMatchesItsOwnCheckpoint) {
+  const Params lib = picdem::core::read_case(Comm(), std::string(PICDEM_SOURCE_DIR) + "/" + kCase,
+                                             {}, picdem::coupling::case_schema());
+  EXPECT_TRUE(picdem::io::case_differences(lib.to_yaml(), lib, picdem::run::case_schema()).empty());
+}
