@@ -181,26 +181,28 @@ std::map<std::string, std::string> flat_case(const std::string& yaml, const std:
   return out;
 }
 
+// A written case resolved through `schema` (defaults filled in, values in the schema's spelling),
+// or as written when it no longer resolves: the differences then name the keys this picdem does
+// not accept.
+std::string resolved_or_as_written(const std::string& yaml, const std::string& source,
+                                   const core::ParamSchema& schema) {
+  try {
+    return core::resolve_written_case(yaml, source, schema).to_yaml();
+  } catch (const core::InputError&) {
+    return yaml;
+  }
+}
+
 }  // namespace
 
 std::vector<std::string> case_differences(const std::string& stored_yaml,
                                           const core::Params& current,
                                           const core::ParamSchema& schema) {
-  std::string stored = stored_yaml;
-  try {
-    stored = core::resolve_written_case(stored_yaml, "the checkpoint's case", schema).to_yaml();
-  } catch (const core::InputError&) {
-    // compared as written: the differences name the keys this picdem no longer accepts
-  }
-  // The current case through the same schema: a section the caller's Params lack (built with
+  // The current case goes through the same schema: a section the caller's Params lack (built with
   // fewer keys than `schema`, e.g. coupling's schema without the run section) takes its defaults,
   // as the stored case's missing keys do.
-  std::string now = current.to_yaml();
-  try {
-    now = core::resolve_written_case(now, "the current case", schema).to_yaml();
-  } catch (const core::InputError&) {
-    // compared as it is
-  }
+  const std::string stored = resolved_or_as_written(stored_yaml, "the checkpoint's case", schema);
+  const std::string now = resolved_or_as_written(current.to_yaml(), "the current case", schema);
   const auto a = flat_case(stored, "the checkpoint's case");
   const auto b = flat_case(now, "the current case");
   std::vector<std::string> diff;
