@@ -134,6 +134,10 @@ the value and what is allowed, when:
 - `fluid/viscosity` is more than any step can carry: with the explicit scheme its stable step
   h^2 / (4 nu) is below `time/dt_min`; with the implicit ones the viscous number
   nu `time/dt_max` / h^2 exceeds 1e12, where the solve's mass term is lost to round-off;
+- a solid's density is below 1e-10 of `fluid/density` (the message names the solid and both
+  densities): the pressure system's fluid terms and that solid's would then differ by more than
+  round-off carries (`cases/floating_disk`, 30 steps: a ratio of 5e-10 runs, 5e-12 stops with the
+  pressure solve unconverged); no real solid is that light, a mistyped `fluid/density` is;
 - water regions reach outside the tank or are empty;
 - `solver/Belos`, `solver/MueLu` (and the lists merged from `solver/MueLu_solids`,
   `solver/MueLu_one_level`), or the implicit viscous solve's `viscous_solver/Belos`,

@@ -1,5 +1,5 @@
 #pragma once
-// Checks of a validated case before anything runs (doc/cases.md, "Checks before the run"): the
+// Checks of a validated case before anything runs (doc/parameters.md, "Checks before the run"): the
 // solids' placement (solid_placement.hpp), the linear-solver sublists against Trilinos' own
 // validators, and an estimate of the memory each rank needs against its share of the machine.
 #include <string>
