@@ -50,7 +50,8 @@ double choose_time_step(const TimeStepLimits& set, const FluidConfig& cfg, doubl
   const double dt_max = set.dt_max;
   if (!fluid) return dt_max;
   const double reach = set.cfl * set.h;  // the distance anything may move in one step
-  double dt = std::min(dt_max, cfl_time_step(fluid->u, fluid->w, set.h, set.cfl, dt_max, comm));
+  const double dt_grid = cfl_time_step(fluid->u, fluid->w, set.h, set.cfl, dt_max, comm);
+  double dt = std::min(dt_max, dt_grid);
   if (const double in = cfg.open.max_inflow_speed(t); in > 0.0)
     dt = std::min(dt, reach / in);  // the inflow's speed (time/cfl), known before the grid has it
   dt = std::min(dt, viscous_time_limit(cfg));  // explicit viscosity's stability
@@ -66,7 +67,12 @@ double choose_time_step(const TimeStepLimits& set, const FluidConfig& cfg, doubl
       << " s (below time/dt_min): the flow has blown up"
       << (cfg.open.any_inflow() ? " or the inflow speed (open/<side>/velocity or table) is "
                                   "too fast for time/dt_min"
-                                : "");
+                                : "")
+      << " (fastest on the grid " << (dt_grid < dt_max ? "" : "below ") << reach / dt_grid
+      << " m/s; particles or solids " << s
+      << " m/s, accelerating at " << motion.accel
+      << " m/s^2). Inputs that make a flow this fast: fluid/density = " << cfg.rho
+      << " kg/m^3 far from the solids' densities, gravity, an inflow, solids' initial velocities";
     throw core::SolverError(m.str());
   }
   return dt;

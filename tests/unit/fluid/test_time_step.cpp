@@ -72,6 +72,11 @@ TEST(TimeStep, CollapseBelowDtMinStopsTheRun) {
     const std::string what = e.what();
     EXPECT_NE(what.find("step 7 at t = 0.25 s"), std::string::npos) << what;
     EXPECT_NE(what.find("below time/dt_min"), std::string::npos) << what;
+    // what is fast (the grid at 2 m/s, the particles or solids at 50 m/s) and the inputs that
+    // make flows this fast, with fluid/density's value
+    EXPECT_NE(what.find("fastest on the grid 2 m/s; particles or solids 50 m/s"), std::string::npos)
+        << what;
+    EXPECT_NE(what.find("fluid/density = 1000 kg/m^3"), std::string::npos) << what;
   }
   // 5e-4 before the end (less than dt_min): the short step is taken
   EXPECT_NEAR(fluid::choose_time_step(limits, cfg, 0.9995, 7, &t.f, {50.0}, 0.0, t.comm), 1e-4,
