@@ -72,6 +72,9 @@ TEST(CheckpointErrors, InterruptedWriteKeepsPreviousFile) {
   }
   comm.barrier();
   EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));
+  // Every rank has looked before the root writes the temporary below: leaving a barrier is not
+  // simultaneous, and a rank descheduled there would see the next write's file.
+  comm.barrier();
   // A crash leaves a half-written temporary behind: still the previous file is what is read.
   if (comm.is_root()) std::ofstream(path + ".tmp", std::ios::binary) << "\x89HDF half written";
   comm.barrier();
