@@ -39,6 +39,7 @@ struct RunResult {
   std::vector<long long> particles_start, solids_start, particles_end, solids_end;
   // particles and solids owned at the end by another rank than at the start
   std::vector<long long> moved = {0, 0};
+  long long steps = 0;  // steps taken
 };
 
 test_support::Holding solid_ids(const dem::DemSolver& dem) {
@@ -53,9 +54,10 @@ core::Params case_params(const core::Comm& comm) {
                                   "grid/cell_size=0.001", "time/end=10"});
 }
 
-// Runs `steps` steps on the first `ranks` ranks of the world, from the start or (`from` not empty)
-// from that checkpoint; rank 0 broadcasts the result.
-RunResult run_on(int ranks, int steps, const std::string& from = "") {
+// Runs `steps` steps (or, with `until` > 0, steps until the time reaches `until`) on the first
+// `ranks` ranks of the world, from the start or (`from` not empty) from that checkpoint; rank 0
+// broadcasts the result.
+RunResult run_on(int ranks, int steps, const std::string& from = "", double until = 0.0) {
   RunResult out;
   test_support::on_first_ranks(ranks, [&](MPI_Comm sub) {
     core::Comm comm(sub);
@@ -71,8 +73,9 @@ RunResult run_on(int ranks, int steps, const std::string& from = "") {
     // cylinders may cross a cut line and come back: their hand-overs are counted step by step
     long long solid_moves = 0;
     auto s1 = s0;
-    for (int n = 0; n < steps; ++n) {
+    for (int n = 0; until > 0.0 ? sim.time() < until : n < steps; ++n) {
       sim.step();
+      ++out.steps;
       auto now = solid_ids(*sim.dem());
       solid_moves += test_support::owner_changes(sub, s1, now);
       s1 = std::move(now);
@@ -91,6 +94,9 @@ RunResult run_on(int ranks, int steps, const std::string& from = "") {
   test_support::broadcast_from_root(v, MPI_DOUBLE);
   out.d.fluid_volume = v[0];
   test_support::broadcast_from_root(out.solids, MPI_DOUBLE);
+  std::vector<long long> taken = {out.steps};
+  test_support::broadcast_from_root(taken, MPI_LONG_LONG);
+  out.steps = taken[0];
   for (auto* a :
        {&out.particles_start, &out.solids_start, &out.particles_end, &out.solids_end, &out.moved})
     test_support::broadcast_from_root(*a, MPI_LONG_LONG);
@@ -99,8 +105,10 @@ RunResult run_on(int ranks, int steps, const std::string& from = "") {
 
 // Every rank of b owns water and cylinders at its start and end; particles (and, when
 // `solids_move`, cylinders) changed owner during the run; b agrees with the 1-rank run a.
-void expect_cut_and_agreement(const RunResult& a, const RunResult& b, int ranks, int steps,
+void expect_cut_and_agreement(const RunResult& a, const RunResult& b, int ranks,
                               bool solids_move) {
+  const long long steps = b.steps;
+  EXPECT_EQ(a.steps, b.steps) << ranks << " ranks took another number of steps than 1 rank";
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   for (int r = 0; r < ranks; ++r) {
@@ -111,12 +119,12 @@ void expect_cut_and_agreement(const RunResult& a, const RunResult& b, int ranks,
     EXPECT_GT(b.solids_end[q], 0) << ranks << " ranks, end: rank " << r << " holds no cylinder";
     if (rank == 0)
       std::printf(
-          "%d ranks, rank %d: %lld particles, %lld cylinders (after %d steps: %lld, %lld)\n", ranks,
+          "%d ranks, rank %d: %lld particles, %lld cylinders (after %lld steps: %lld, %lld)\n", ranks,
           r, b.particles_start[q], b.solids_start[q], steps, b.particles_end[q], b.solids_end[q]);
   }
   // the run exercised migration: particles (and cylinders) changed owner
   if (rank == 0)
-    std::printf("%d ranks, %d steps: %lld particles and %lld cylinders changed owner\n", ranks,
+    std::printf("%d ranks, %lld steps: %lld particles and %lld cylinders changed owner\n", ranks,
                 steps, b.moved[0], b.moved[1]);
   EXPECT_GT(b.moved[0], 0) << ranks << " ranks: no particle changed owner";
   if (solids_move) {
@@ -132,7 +140,7 @@ void expect_cut_and_agreement(const RunResult& a, const RunResult& b, int ranks,
   }
   if (rank == 0)
     std::printf(
-        "%d steps, 1 vs %d ranks: position difference %.3e m, velocity %.3e m/s, fluid volume "
+        "%lld steps, 1 vs %d ranks: position difference %.3e m, velocity %.3e m/s, fluid volume "
         "%.3e relative\n",
         steps, ranks, dx, dv, std::abs(a.d.fluid_volume - b.d.fluid_volume) / a.d.fluid_volume);
   EXPECT_LT(dx, 1e-7);
@@ -150,36 +158,38 @@ TEST(WorkDecomposition, RanksCutThroughWaterAndCylindersAndAgreeWithOneRank) {
   const auto a = run_on(1, steps);
   ASSERT_EQ(a.solids.size(), 33u * 4u);
   for (int ranks = 2; ranks <= 4; ++ranks)
-    expect_cut_and_agreement(a, run_on(ranks, steps), ranks, steps, false);
+    expect_cut_and_agreement(a, run_on(ranks, steps), ranks, false);
 }
 
-// From the collapse: the 1-rank run's state at steps 170 and 200 (t = 0.069 and 0.080 s, the
-// stack spreading to the right), continued 30 steps on 1 rank and on N ranks from the same
-// checkpoint. The cylinders then cross the cut lines of the weighted decomposition of 2 (from step
-// 200, cut at x = 44 mm), 3 and 4 ranks (from step 170, cuts at 27, 57 and 20, 42, 65 mm), which
-// the tests asserts; from step 0 none crosses within 30 steps, and at 160 steps from the start the
-// ranks are 3.5e-6 m apart (the contacts amplify round-off), so the windows start late and stay
-// short. Same limits as above.
+// From the collapse: the 1-rank run's state at t = 0.085 and 0.098 s (the stack spreading to the
+// right), continued on 1 rank and on N ranks from the same checkpoint to 0.098 and 0.109 s. The
+// cylinders then cross the cut lines of the weighted decomposition of 2 (from 0.098 s), 3 and 4
+// ranks (from 0.085 s), which the test asserts; from step 0 none crosses within 30 steps, and at
+// 160 steps from the start the ranks are 3.5e-6 m apart (the contacts amplify round-off), so the
+// windows start late and stay short. The windows are times, not step numbers: the part of the
+// collapse they cover does not move with the time-step rule (time/cfl_speed). They were steps
+// 170-200 and 200-230 until the step-count windows were found to cover another part of the
+// collapse under time/cfl_speed grid; the times are where those steps landed under the
+// particles rule (t = 0.0847 and 0.0979 s, 0.1089 at step 230). Same limits as above.
 TEST(WorkDecomposition, CylindersChangeOwnerInTheCollapse) {
   int size = 0;
   MPI_Comm_size(MPI_COMM_WORLD, &size);
   ASSERT_EQ(size, 4) << "run this test on 4 ranks";
-  const int steps = 30;
-  const std::string early = "collapse_170.h5", late = "collapse_200.h5";
+  const double t_early = 0.085, t_late = 0.098, t_end = 0.109;
+  const std::string early = "collapse_early.h5", late = "collapse_late.h5";
   test_support::on_first_ranks(1, [&](MPI_Comm sub) {
     core::Comm comm(sub);
     coupling::Simulation sim(comm, case_params(comm));
     run::Run run(sim);
-    for (int n = 0; n < 200; ++n) {
-      sim.step();
-      if (n + 1 == 170) run.write_checkpoint(early);
-    }
+    while (sim.time() < t_early) sim.step();
+    run.write_checkpoint(early);
+    while (sim.time() < t_late) sim.step();
     run.write_checkpoint(late);
   });
   MPI_Barrier(MPI_COMM_WORLD);
-  const auto a_early = run_on(1, steps, early), a_late = run_on(1, steps, late);
+  const auto a_early = run_on(1, 0, early, t_late), a_late = run_on(1, 0, late, t_end);
   ASSERT_EQ(a_early.solids.size(), 33u * 4u);
-  expect_cut_and_agreement(a_late, run_on(2, steps, late), 2, steps, true);
+  expect_cut_and_agreement(a_late, run_on(2, 0, late, t_end), 2, true);
   for (int ranks = 3; ranks <= 4; ++ranks)
-    expect_cut_and_agreement(a_early, run_on(ranks, steps, early), ranks, steps, true);
+    expect_cut_and_agreement(a_early, run_on(ranks, 0, early, t_late), ranks, true);
 }
