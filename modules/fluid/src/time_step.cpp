@@ -21,7 +21,8 @@ void declare_time_parameters(core::ParamSchema& s) {
   s.real("time/cfl", 0.5, "CFL number: dt <= cfl h / max|u| on the grid").positive().at_most(5.0);
   s.string("time/cfl_speed", "particles", {"particles", "grid"},
            "the speed of the CFL bound: the largest of the grid's face velocities, which move the "
-           "particles, and the solids' surface speeds with gravity's change over the step (grid), "
+           "particles, and the solids' surface speeds with gravity's change over the step, with dt at "
+           "most sqrt(cfl h / |g|) (grid), "
            "or of the grid's face velocities and the particles' own speeds (particles; "
            "doc/coupling.md)");
   s.real("time/dt_max", 1e-3, "largest time step [s]").positive();
@@ -55,6 +56,11 @@ double choose_time_step(const TimeStepLimits& set, const FluidConfig& cfg, doubl
   if (const double in = cfg.open.max_inflow_speed(t); in > 0.0)
     dt = std::min(dt, reach / in);  // the inflow's speed (time/cfl), known before the grid has it
   dt = std::min(dt, viscous_time_limit(cfg));  // explicit viscosity's stability
+  // The grid rule sees the faces' velocities before the step, not gravity's change over it: water
+  // at rest would take dt_max. Water accelerated from rest by g moves |g| dt^2 in the step (the
+  // faces reach |g| dt): dt <= sqrt(cfl h / |g|) keeps that within cfl h.
+  if (const double g = std::hypot(cfg.g.x, cfg.g.z); !set.cfl_from_particles && g > 0.0)
+    dt = std::min(dt, std::sqrt(reach / g));
   const double s = motion.speed;
   if (motion.accel > 0.0)  // (s + a dt) dt = CFL h: dt = 2 CFL h / (s + sqrt(s^2 + 4 a CFL h))
     dt = std::min(dt, 2.0 * reach / (s + std::sqrt(s * s + 4.0 * motion.accel * reach)));

@@ -2,6 +2,7 @@
 // face speed 2 m/s (w = -2 on every face, u = 1), on 1 or 2 ranks (the speed is every rank's).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 #include "picdem/core/error.hpp"
@@ -106,4 +107,35 @@ TEST(TimeStep, InflowSpeedBoundsTheStepFromRest) {
   EXPECT_NEAR(fluid::choose_time_step(limits, cfg, 1.0, 0, &t.f, {0.0}, 0.0, t.comm), 5e-4, 1e-18);
   left.kind = fluid::OpenKind::Outflow;
   EXPECT_EQ(fluid::choose_time_step(limits, cfg, 1.0, 0, &t.f, {0.0}, 0.0, t.comm), 0.01);
+}
+
+// Under time/cfl_speed grid the faces' velocities are those before the step: water at rest would
+// take dt_max. Water that gravity accelerates from rest moves |g| dt^2 in the step: dt <=
+// sqrt(cfl h / |g|). h = 0.01, cfl 0.5, g = (3, -4) (|g| = 5): sqrt(0.005 / 5) = 0.0316... s; with
+// a grid at 2 m/s (2.5e-3) or dt_max below it, those bind; the particles rule has no such bound.
+TEST(TimeStep, GridRuleBoundsTheFluidsStepByGravity) {
+  Tank t;
+  for (auto* field : {&t.f.u, &t.f.w}) {
+    const auto b = field->storage();
+    for (int k = b.k0; k < b.k1; ++k)
+      for (int i = b.i0; i < b.i1; ++i) (*field)(i, k) = 0.0;
+  }
+  fluid::TimeStepLimits grid{0.01, 0.5, 1.0, 1e-6, 10.0};
+  grid.cfl_from_particles = false;
+  fluid::FluidConfig cfg;
+  cfg.h = 0.01, cfg.nu = 0.0, cfg.g = {3.0, -4.0};
+  const double bound = std::sqrt(0.005 / 5.0);
+  EXPECT_NEAR(fluid::choose_time_step(grid, cfg, 0.0, 0, &t.f, {0.0}, 0.0, t.comm), bound, 1e-17);
+  fluid::TimeStepLimits particles = grid;
+  particles.cfl_from_particles = true;
+  EXPECT_EQ(fluid::choose_time_step(particles, cfg, 0.0, 0, &t.f, {0.0}, 0.0, t.comm), 1.0);
+  // no gravity, no bound
+  cfg.g = {0.0, 0.0};
+  EXPECT_EQ(fluid::choose_time_step(grid, cfg, 0.0, 0, &t.f, {0.0}, 0.0, t.comm), 1.0);
+  cfg.g = {3.0, -4.0};
+  grid.dt_max = 0.02;
+  EXPECT_EQ(fluid::choose_time_step(grid, cfg, 0.0, 0, &t.f, {0.0}, 0.0, t.comm), 0.02);
+  Tank moving;  // faces at 2 m/s: 0.5 0.01 / 2 = 2.5e-3
+  EXPECT_NEAR(fluid::choose_time_step(grid, cfg, 0.0, 0, &moving.f, {0.0}, 0.0, moving.comm),
+              2.5e-3, 1e-18);
 }

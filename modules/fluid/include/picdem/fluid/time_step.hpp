@@ -35,7 +35,8 @@ struct StepMotion {
 };
 
 /// dt = min(dt_max, cfl h / max|u|, the largest dt with (speed + accel dt) dt <= cfl h,
-/// viscous_time_limit(cfg), growth * last_dt (last_dt <= 0, the first step: no such bound));
+/// viscous_time_limit(cfg), growth * last_dt (last_dt <= 0, the first step: no such bound),
+/// and under time/cfl_speed grid sqrt(cfl h / |g|), the water's fall from rest over the step);
 /// dt_max without water (fluid: nullptr). Throws core::SolverError when dt falls below dt_min
 /// before time/end (t, step: the step's start, named in the message). Collective.
 double choose_time_step(const TimeStepLimits& limits, const FluidConfig& cfg, double t,
