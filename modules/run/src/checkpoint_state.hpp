@@ -10,6 +10,7 @@
 #include "picdem/core/params.hpp"
 #include "picdem/coupling/simulation.hpp"
 #include "picdem/dem/dem_solver.hpp"
+#include "picdem/run/check_step.hpp"
 #include "picdem/run/output.hpp"
 
 namespace picdem::run {
@@ -35,14 +36,5 @@ void write_checkpoint(const CheckpointParts& parts, const CheckpointHeader& head
 /// returns its header. Throws core::InputError for a missing, truncated, corrupted or mismatched
 /// file (format version, case).
 CheckpointHeader read_checkpoint(const CheckpointParts& parts, const std::string& path);
-
-/// Collective, after every step (g: its diagnostics): throws core::SolverError naming the step
-/// when the step blew up: a particle moved more than 2 h (CFL far exceeded; the particles' speed
-/// times dt, or with `grid_speed` (time/cfl_speed: grid) the distance the grid velocity moved
-/// them, Diagnostics::advected), or a
-/// solid's real boundary overlaps another solid, a wall or an obstacle (DEM overlap delta beyond
-/// the imaginary gap, eq. 19).
-void check_step(const coupling::Diagnostics& g, double h, bool has_fluid, bool grid_speed,
-                const dem::DemSolver* dem, const core::Comm& comm);
 
 }  // namespace picdem::run
