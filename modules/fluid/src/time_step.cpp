@@ -19,7 +19,7 @@ void declare_time_parameters(core::ParamSchema& s) {
       .positive()
       .is_required();
   s.real("time/cfl", 0.5, "CFL number: dt <= cfl h / max|u| on the grid").positive().at_most(5.0);
-  s.string("time/cfl_speed", "particles", {"particles", "grid"},
+  s.string("time/cfl_speed", "grid", {"particles", "grid"},
            "the speed of the CFL bound: the largest of the grid's face velocities, which move the "
            "particles, and the solids' surface speeds with gravity's change over the step, with dt at "
            "most sqrt(cfl h / |g|) (grid), "
