@@ -284,8 +284,6 @@ Diagnostics record_diagnostics(const Layout& L, const StepSettings& set, double 
   Diagnostics g;
   g.t = t, g.dt = dt, g.step = step;
   g.advected = advected;
-  if (fluid && !set.time.cfl_from_particles)
-    g.face_speed = fluid::max_face_speed(fluid->u, fluid->w, comm);
   g.ppe_iterations = solve.iterations;
   g.ppe_residual = solve.relative_residual;
   g.ppe_structure_reused = solve.reused_structure;

@@ -19,12 +19,13 @@ void declare_time_parameters(core::ParamSchema& s) {
       .positive()
       .is_required();
   s.real("time/cfl", 0.5, "CFL number: dt <= cfl h / max|u| on the grid").positive().at_most(5.0);
-  s.string("time/cfl_speed", "grid", {"particles", "grid"},
-           "the speed of the CFL bound: the largest of the grid's face velocities, which move the "
-           "particles, and the solids' surface speeds with gravity's change over the step, with dt at "
-           "most sqrt(cfl h / |g|) (grid), "
-           "or of the grid's face velocities and the particles' own speeds (particles; "
-           "doc/coupling.md)");
+  s.string(
+      "time/cfl_speed", "grid", {"particles", "grid"},
+      "the speed of the CFL bound: the largest of the grid's face velocities, which move the "
+      "particles, and the solids' surface speeds with gravity's change over the step, with dt at "
+      "most sqrt(cfl h / |g|) (grid), "
+      "or of the grid's face velocities and the particles' own speeds (particles; "
+      "doc/coupling.md)");
   s.real("time/dt_max", 1e-3, "largest time step [s]").positive();
   s.real("time/dt_growth", 1.2,
          "time/cfl_speed grid: largest ratio of a time step to the last one: after a short step "
@@ -75,8 +76,7 @@ double choose_time_step(const TimeStepLimits& set, const FluidConfig& cfg, doubl
                                   "too fast for time/dt_min"
                                 : "")
       << " (fastest on the grid " << (dt_grid < dt_max ? "" : "below ") << reach / dt_grid
-      << " m/s; particles or solids " << s
-      << " m/s, accelerating at " << motion.accel
+      << " m/s; particles or solids " << s << " m/s, accelerating at " << motion.accel
       << " m/s^2). Inputs that make a flow this fast: fluid/density = " << cfg.rho
       << " kg/m^3 far from the solids' densities, gravity, an inflow, solids' initial velocities";
     throw core::SolverError(m.str());

@@ -45,9 +45,6 @@ struct Diagnostics {
   double max_speed = 0.0;
   double solid_kinetic_energy = 0.0;
   double advected = 0.0;  ///< largest distance the grid velocity moved a particle [m] (not in csv)
-  /// time/cfl_speed grid: the largest face speed after the step [m/s] (0 under particles; not in
-  /// csv): what the next step will move the particles with (run::check_step)
-  double face_speed = 0.0;
   std::vector<double> levels;   ///< free-surface height at output/level_probes [m]
   long long solids_in_box = 0;  ///< solids with their centre in output/solid_count_box
   /// With open sides (open/): the volumes that entered through the inflows and left through the

@@ -10,8 +10,7 @@ namespace picdem::run {
 /// Collective, after every step (g: its diagnostics): throws core::SolverError naming the step
 /// when the step blew up: a particle moved more than 2 h (CFL far exceeded; the particles' speed
 /// times dt, or with `grid_speed` (time/cfl_speed: grid) the distance the grid velocity moved
-/// them, Diagnostics::advected, or the largest face speed after the step times its dt,
-/// Diagnostics::face_speed), or a
+/// them, Diagnostics::advected), or a
 /// solid's real boundary overlaps another solid, a wall or an obstacle (DEM overlap delta beyond
 /// the imaginary gap, eq. 19).
 void check_step(const coupling::Diagnostics& g, double h, bool has_fluid, bool grid_speed,
