@@ -22,8 +22,10 @@ struct Tank {
     s.nx = 8, s.nz = 4, s.h = 0.01;
     return s;
   }
-  Tank() : spec(make_spec()), d(spec, comm, 3, 0, 0), f(d) {
-    for (auto [field, value] : {std::pair{&f.u, 1.0}, std::pair{&f.w, -2.0}}) {
+  Tank() : spec(make_spec()), d(spec, comm, 3, 0, 0), f(d) { fill(1.0, -2.0); }
+  /// u and w on every face
+  void fill(double u, double w) {
+    for (auto [field, value] : {std::pair{&f.u, u}, std::pair{&f.w, w}}) {
       const auto b = field->storage();
       for (int k = b.k0; k < b.k1; ++k)
         for (int i = b.i0; i < b.i1; ++i) (*field)(i, k) = value;
@@ -89,11 +91,7 @@ TEST(TimeStep, CollapseBelowDtMinStopsTheRun) {
 // (between 6 and 14 at times 0.5 and 1.5, at its second height), 5e-4; an outflow, none.
 TEST(TimeStep, InflowSpeedBoundsTheStepFromRest) {
   Tank t;
-  for (auto* field : {&t.f.u, &t.f.w}) {
-    const auto b = field->storage();
-    for (int k = b.k0; k < b.k1; ++k)
-      for (int i = b.i0; i < b.i1; ++i) (*field)(i, k) = 0.0;
-  }
+  t.fill(0.0, 0.0);
   const fluid::TimeStepLimits limits{0.01, 0.5, 0.01, 1e-6, 2.0};
   fluid::FluidConfig cfg;
   cfg.h = 0.01;
@@ -115,11 +113,7 @@ TEST(TimeStep, InflowSpeedBoundsTheStepFromRest) {
 // a grid at 2 m/s (2.5e-3) or dt_max below it, those bind; the particles rule has no such bound.
 TEST(TimeStep, GridRuleBoundsTheFluidsStepByGravity) {
   Tank t;
-  for (auto* field : {&t.f.u, &t.f.w}) {
-    const auto b = field->storage();
-    for (int k = b.k0; k < b.k1; ++k)
-      for (int i = b.i0; i < b.i1; ++i) (*field)(i, k) = 0.0;
-  }
+  t.fill(0.0, 0.0);
   fluid::TimeStepLimits grid{0.01, 0.5, 1.0, 1e-6, 10.0};
   grid.cfl_from_particles = false;
   fluid::FluidConfig cfg;
