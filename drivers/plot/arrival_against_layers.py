@@ -30,10 +30,10 @@ def read(logs):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("logs", nargs="+")
-    ap.add_argument("--out", default="arrival_against_layers.png")
-    ap.add_argument("--title", default="")
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("logs", nargs="+", help="outputs of test_validation_dam_break_cylinders")
+    ap.add_argument("--out", default="arrival_against_layers.png", help="the PNG to write")
+    ap.add_argument("--title", default="", help="the plot's title")
     a = ap.parse_args()
     runs = read(a.logs)
     if not runs:
@@ -49,10 +49,9 @@ def main():
     ax.set_xlabel("layers of cylinders")
     ax.set_ylabel("first arrival at the right wall [s]")
     ax.set_xticks(sorted({n for n, _ in runs}))
-    if a.title:
-        ax.set_title(a.title)
+    ax.set(title=a.title)
     ax.grid(alpha=0.3)
-    ax.legend()
+    ax.legend(loc="upper left")
     fig.tight_layout()
     fig.savefig(a.out, dpi=120)
     print("wrote", a.out)
