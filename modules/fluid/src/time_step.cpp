@@ -23,9 +23,8 @@ void declare_time_parameters(core::ParamSchema& s) {
       "time/cfl_speed", "grid", {"particles", "grid"},
       "the speed of the CFL bound: the largest of the grid's face velocities, which move the "
       "particles, and the solids' surface speeds with gravity's change over the step, with dt at "
-      "most sqrt(cfl h / |g|) (grid), "
-      "or of the grid's face velocities and the particles' own speeds (particles; "
-      "doc/coupling.md)");
+      "most sqrt(cfl h / |g|) (grid), or of the grid's face velocities and the particles' own "
+      "speeds (particles; doc/coupling.md)");
   s.real("time/dt_max", 1e-3, "largest time step [s]").positive();
   s.real("time/dt_growth", 1.2,
          "time/cfl_speed grid: largest ratio of a time step to the last one: after a short step "

@@ -10,7 +10,6 @@
 #include "picdem/core/params.hpp"
 #include "picdem/coupling/simulation.hpp"
 #include "picdem/dem/dem_solver.hpp"
-#include "picdem/run/check_step.hpp"
 #include "picdem/run/output.hpp"
 
 namespace picdem::run {

@@ -6,6 +6,7 @@
 #include "picdem/core/timer.hpp"
 #include "picdem/coupling/schema.hpp"
 #include "picdem/io/checkpoint_grid.hpp"
+#include "picdem/run/check_step.hpp"
 #include "picdem/run/output.hpp"
 
 namespace picdem::run {
