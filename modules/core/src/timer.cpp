@@ -3,6 +3,7 @@
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 
+#include <cstdlib>
 #include <ostream>
 
 namespace picdem::core {
@@ -40,7 +41,9 @@ void reset_timers() {
 
 void summarize_timers(const Comm& comm, std::ostream& out) {
   auto tcomm = Teuchos::rcp(new Teuchos::MpiComm<int>(comm.raw()));
-  Teuchos::TimeMonitor::summarize(tcomm.ptr(), out, false, true, false, Teuchos::Union, "picdem: ");
+  // PICDEM_ALL_TIMERS set: Trilinos' own timers too (doc/output.md)
+  const char* filter = std::getenv("PICDEM_ALL_TIMERS") ? "" : "picdem: ";
+  Teuchos::TimeMonitor::summarize(tcomm.ptr(), out, false, true, false, Teuchos::Union, filter);
 }
 
 }  // namespace picdem::core

@@ -42,6 +42,7 @@ struct Simulation::Impl {
   std::unique_ptr<dem::DemSolver> dem;  // null without solids (with water)
   std::vector<geometry::Obstacle> obstacles;
   particles::OccupancyPass occupancy;  // the particles' S, from the last diagnostics to the cells
+  CutCellsAhead cut_ahead;             // the cut cells at the last step's X^{n+1}
 
   // the clock and what the last step reported
   double t = 0.0;
@@ -167,8 +168,9 @@ void Simulation::step() {
   fluid::SolveStats solve;
   double advected = 0.0;
   if (fluid) {
-    solids = place_solids(L, set, m.dem.get(), m.obstacles, m.fluid.apertures);  // geometry
-    mark_cells(L, set, solids.cut, m.particles, m.occupancy, m.fluid);           // transfer
+    solids = place_solids(L, set, m.dem.get(), m.obstacles, m.fluid.apertures,
+                          m.cut_ahead);                                 // geometry
+    mark_cells(L, set, solids.cut, m.particles, m.occupancy, m.fluid);  // transfer
     if (correct_density(L, set, m.step, solids, m.fluid, m.density_solver.get(), m.particles))
       mark_cells(L, set, solids.cut, m.particles, m.occupancy, m.fluid);   // density: cells again
     particles_to_grid(L, set, solids, m.particles, m.occupancy, m.fluid);  // transfer
@@ -192,9 +194,10 @@ void Simulation::step() {
     advected = advect_particles(L, set, m.step, solids.cut, after, dt, m.fluid, m.particles);
     if (m.dem) {  // the water where the particles are now, less the solids where they are now
       core::ScopedTimer timer("geometry: cut cells at X^n+1");
-      fluid::Apertures unused = m.fluid.apertures;
-      cut_after =
-          fluid::cut_cells(after.placements, after.obstacles, set.tiny_fraction, L.d, unused);
+      fluid::Apertures E;
+      cut_after = fluid::cut_cells(after.placements, after.obstacles, set.tiny_fraction, L.d, E);
+      m.cut_ahead = {true, after.placements, after.obstacles, L.d.storage(grid::Stagger::Cell),
+                     {},   std::move(E)};  // the next step's, with cut_after once recorded
     }
   } else if (m.dem) {
     m.fluid_loads = advance_solids(nullptr, nullptr, dt, {}, *m.dem);  // dry: solids only
@@ -211,6 +214,7 @@ void Simulation::step() {
   m.diag = record_diagnostics(L, set, m.t, m.step, dt, advected, solve, m.particles, m.dem.get(),
                               cut, m.occupancy, fluid);
   m.diag.open_volumes = volumes;
+  if (fluid && m.dem) m.cut_ahead.cut = std::move(cut_after);
 }
 
 const fluid::FluidState& Simulation::fluid() const {

@@ -66,15 +66,48 @@ fluid::StepMotion cfl_extra_motion(const Layout& L, const StepSettings& set,
 
 // Built on every rank of a run with bodies, also where none is near this step: a rank a solid
 // has just left must not keep its old apertures, nor one it is about to enter lack cut cells.
+bool CutCellsAhead::matches(const dem::SolidScene& scene, const grid::Decomposition& d) const {
+  if (!valid || !(window == d.storage(Stagger::Cell))) return false;
+  if (placements.size() != scene.placements.size() || obstacles.size() != scene.obstacles.size())
+    return false;
+  for (std::size_t b = 0; b < placements.size(); ++b) {
+    const geometry::SolidPlacement &a = placements[b], &s = scene.placements[b];
+    if (a.id != s.id || a.shape != s.shape || !(a.pose.x == s.pose.x) ||
+        a.pose.theta != s.pose.theta)
+      return false;
+  }
+  for (std::size_t o = 0; o < obstacles.size(); ++o)
+    if (obstacles[o].name != scene.obstacles[o].name ||
+        obstacles[o].polygons != scene.obstacles[o].polygons)
+      return false;
+  return true;
+}
+
 SolidsAtStart place_solids(const Layout& L, const StepSettings& set, const dem::DemSolver* dem,
                            const std::vector<geometry::Obstacle>& obstacles,
-                           fluid::Apertures& apertures) {
+                           fluid::Apertures& apertures, CutCellsAhead& ahead) {
   core::ScopedTimer timer("geometry");
   SolidsAtStart out;
   out.scene = dem::scene_of(dem, obstacles);
-  if (set.has_bodies)
-    out.cut = fluid::cut_cells(out.scene.placements, out.scene.obstacles, set.tiny_fraction, L.d,
-                               apertures);
+  if (set.has_bodies) {
+    const bool still = dem == nullptr;  // obstacles alone: the same cut cells every step
+    if (ahead.matches(out.scene, L.d)) {
+      out.cut = still ? ahead.cut : std::move(ahead.cut);
+      apertures = still ? ahead.apertures : std::move(ahead.apertures);
+      ahead.valid = still;
+    } else {
+      out.cut = fluid::cut_cells(out.scene.placements, out.scene.obstacles, set.tiny_fraction, L.d,
+                                 apertures);
+      ahead.valid = false;
+      if (still)
+        ahead = {true,
+                 out.scene.placements,
+                 out.scene.obstacles,
+                 L.d.storage(Stagger::Cell),
+                 out.cut,
+                 apertures};
+    }
+  }
   if (set.fluid.open.any()) fluid::open_side_apertures(apertures, set.fluid.open, L.d);
   return out;
 }

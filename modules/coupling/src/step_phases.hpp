@@ -1,7 +1,8 @@
 #pragma once
 // The phases of the coupled step (paper Fig. 4), each a function of what it reads (values and
 // const references) and what it changes (the one non-const module it advances). Simulation::step
-// calls them in order; nothing here keeps state between steps. Private to the coupling module.
+// calls them in order; nothing here keeps state between steps but CutCellsAhead, which
+// Simulation holds and hands to place_solids. Private to the coupling module.
 #include <vector>
 
 #include "picdem/core/comm.hpp"
@@ -68,10 +69,27 @@ fluid::StepMotion cfl_extra_motion(const Layout& L, const StepSettings& set,
                                    const particles::ParticleSet& particles,
                                    particles::OccupancyPass& occupancy, const dem::DemSolver* dem);
 
-/// geometry: solids at X^n -> cut cells and the fluid's apertures E.
+/// Cut cells built for one scene and window, kept for the next step's place_solids: the step
+/// builds them at X^{n+1} for its diagnostics, and the next step starts from those poses; a scene
+/// of obstacles alone keeps them for the whole run. Used only when the scene (every placement's
+/// id, shape and pose, every obstacle) and the rank's cell window are equal to the kept ones, so
+/// that a rebalance, a restart or a changed solid builds them again: the result is the same bits.
+struct CutCellsAhead {
+  bool valid = false;
+  std::vector<geometry::SolidPlacement> placements;
+  std::vector<geometry::Obstacle> obstacles;
+  core::IndexBox window;
+  geometry::CutCells cut;
+  fluid::Apertures apertures;  ///< fluid::cut_cells' apertures of `cut` (before open sides)
+
+  bool matches(const dem::SolidScene& scene, const grid::Decomposition& d) const;
+};
+
+/// geometry: solids at X^n -> cut cells and the fluid's apertures E; from `ahead` when it
+/// matches (moved out of it when dem moves the solids, copied for a scene of obstacles alone).
 SolidsAtStart place_solids(const Layout& L, const StepSettings& set, const dem::DemSolver* dem,
                            const std::vector<geometry::Obstacle>& obstacles,
-                           fluid::Apertures& apertures);
+                           fluid::Apertures& apertures, CutCellsAhead& ahead);
 
 /// transfer (cells): occupancy S (from `occ` when current), level set phi, cell states, surface
 /// fractions.

@@ -11,6 +11,8 @@
 #include "picdem/dem/parameters.hpp"
 #include "picdem/dem/scene.hpp"
 #include "picdem/geometry/circle.hpp"
+#include "picdem/grid/field.hpp"
+#include "step_phases.hpp"  // private to the coupling module: place_solids, CutCellsAhead
 
 using namespace picdem;
 using core::Vec2;
@@ -182,5 +184,84 @@ TEST(SolidSnapshot, SceneOfAllHoldsEverySolidOnEveryRank) {
     EXPECT_EQ(all.states[b].v.z, v(s).z);
     EXPECT_EQ(all.placements[b].pose.x.x, at(s).x);
     EXPECT_NEAR(all.placements[b].shape->bounding_radius(), radius(s), 1e-15);
+  }
+}
+
+// place_solids takes the cut cells a step kept for the next (CutCellsAhead) only for the scene
+// and the rank's window they were built for, and then gives the same cut cells and apertures as
+// building them: moved out when a DEM moves the solids, kept for a scene of obstacles alone. Three
+// disks and an obstacle on a 100 x 50 grid cut into one strip per rank.
+TEST(CutCellsAhead, UsedOnlyForTheSceneAndWindowTheyWereBuiltFor) {
+  const core::Comm comm;
+  const auto dem = strip_dem(
+      comm, {1, 2, 3}, [](int s) { return 0.031 + 0.01 * s; },
+      [](int s) {
+        return Vec2{0.2 + 0.3 * s, 0.2 + 0.01 * s};
+      },
+      [](int) { return Vec2{}; });
+  geometry::Obstacle o;
+  o.name = "step";
+  o.polygons = {{{0.0, 0.0}, {0.13, 0.0}, {0.13, 0.052}, {0.0, 0.052}}};
+  grid::GridSpec spec;
+  spec.nx = 100, spec.nz = 50, spec.h = 0.01;
+  grid::Decomposition d(spec, comm, 2);
+  grid::Halo halo(d);
+  const coupling::Layout L{d, halo, comm};
+  coupling::StepSettings set;
+  set.spec = spec, set.has_bodies = true, set.tiny_fraction = 1e-3;
+  const auto same = [](const geometry::CutCells& a, const geometry::CutCells& b) {
+    return a.ex == b.ex && a.ez == b.ez && a.fraction == b.fraction && a.body == b.body &&
+           a.obstacle == b.obstacle && a.tiny == b.tiny && a.pieces.size() == b.pieces.size();
+  };
+  const dem::DemSolver* scenes[] = {dem.get(), nullptr};
+  for (const dem::DemSolver* moving : scenes) {
+    SCOPED_TRACE(moving ? "solids of a DEM" : "obstacles alone");
+    coupling::CutCellsAhead ahead;
+    fluid::Apertures E0, E;
+    const auto fresh = coupling::place_solids(L, set, moving, {o}, E0, ahead);  // nothing kept
+    EXPECT_EQ(ahead.valid, moving == nullptr);  // a still scene keeps what it built
+    ASSERT_FALSE(fresh.cut.fraction.empty());
+    // kept cut cells marked so that their use shows; each key changed alone refuses them
+    const auto keep = [&](auto change) {
+      ahead = {true,
+               fresh.scene.placements,
+               fresh.scene.obstacles,
+               d.storage(grid::Stagger::Cell),
+               fresh.cut,
+               E0};
+      ahead.cut.fraction[0] = 42.0;
+      change(ahead);
+    };
+    keep([](coupling::CutCellsAhead&) {});
+    auto used = coupling::place_solids(L, set, moving, {o}, E, ahead);
+    EXPECT_EQ(used.cut.fraction[0], 42.0);
+    EXPECT_TRUE(E.E_x.data() == E0.E_x.data() && E.E_z.data() == E0.E_z.data());
+    EXPECT_EQ(ahead.valid, moving == nullptr);
+    const std::vector<void (*)(coupling::CutCellsAhead&)> changes = {
+        [](coupling::CutCellsAhead& a) { a.valid = false; },
+        [](coupling::CutCellsAhead& a) { a.window.i1 += 1; },
+        [](coupling::CutCellsAhead& a) { a.obstacles[0].polygons[0][2].z += 1e-12; },
+        [](coupling::CutCellsAhead& a) { a.obstacles.clear(); },
+        [](coupling::CutCellsAhead& a) {
+          if (!a.placements.empty())
+            a.placements[0].pose.theta += 1e-12;
+          else
+            a.window.k0 -= 1;  // a rank without solids: another key
+        },
+        [](coupling::CutCellsAhead& a) {
+          if (!a.placements.empty())
+            a.placements[0].pose.x.x += 1e-12;
+          else
+            a.window.k1 += 1;
+        },
+        [](coupling::CutCellsAhead& a) { a.placements.push_back({}); },
+    };
+    for (std::size_t c = 0; c < changes.size(); ++c) {
+      if (!moving && c >= 4) break;  // the obstacles alone have no placements
+      keep(changes[c]);
+      const auto built = coupling::place_solids(L, set, moving, {o}, E, ahead);
+      EXPECT_TRUE(same(built.cut, fresh.cut)) << "change " << c;
+      EXPECT_TRUE(E.E_x.data() == E0.E_x.data() && E.E_z.data() == E0.E_z.data()) << c;
+    }
   }
 }
