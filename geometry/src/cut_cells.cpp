@@ -231,7 +231,19 @@ CutCells build_cut_cells(const GridWindow& window, const std::vector<SolidPlacem
   }
   Builder bd;
   bd.win = window;
-  bd.W = window.cells.grown(1);
+  const IndexBox grown = window.cells.grown(1);
+  bd.W = grown;  // the items that reach the grown window
+  const std::vector<Item> items = make_items(solids, obstacles, bd);
+  // Then W shrinks to the cells the items can touch (add_item's boxes) and one more: every cell
+  // outside is an uncut cell's, which the accessors give without storage (a window mostly of
+  // water or air costs what its bodies cover).
+  IndexBox reach{grown.i1, grown.i0, grown.k1, grown.k0};
+  for (const Item& it : items)
+    reach = {std::min(reach.i0, floor_int(it.lo_x) - 2), std::max(reach.i1, floor_int(it.hi_x) + 3),
+             std::min(reach.k0, floor_int(it.lo_z) - 2),
+             std::max(reach.k1, floor_int(it.hi_z) + 3)};
+  bd.W = reach.intersect(grown);
+  if (bd.W.empty()) bd.W = {grown.i0, grown.i0, grown.k0, grown.k0};
   bd.nwx = bd.W.nx();
   bd.nwz = bd.W.nz();
   const std::size_t ncell = static_cast<std::size_t>(bd.nwx) * bd.nwz;
@@ -243,7 +255,6 @@ CutCells build_cut_cells(const GridWindow& window, const std::vector<SolidPlacem
   bd.best_solid.assign(ncell, -1);
   bd.best_obstacle.assign(ncell, -1);
 
-  const std::vector<Item> items = make_items(solids, obstacles, bd);
   const std::vector<std::vector<int>> neighbours = overlapping_items(items);
   for (std::size_t j = 0; j < items.size(); ++j) add_item(items[j], items, neighbours[j], bd);
   std::vector<int> item_of_solid(solids.size(), 0);
@@ -273,27 +284,33 @@ namespace {
 double CutCells::E_x(int i, int k) const {
   const auto& b = window.cells;
   if (i < b.i0 || i > b.i1 || k < b.k0 || k >= b.k1) out_of_window("E_x", i, k, b);
+  if (i < store.i0 || i > store.i1 || k < store.k0 || k >= store.k1) return window.h;
   return window.h * ex[(i - store.i0) + static_cast<std::size_t>(k - store.k0) * (store.nx() + 1)];
 }
 double CutCells::E_z(int i, int k) const {
   const auto& b = window.cells;
   if (i < b.i0 || i >= b.i1 || k < b.k0 || k > b.k1) out_of_window("E_z", i, k, b);
+  if (i < store.i0 || i >= store.i1 || k < store.k0 || k > store.k1) return window.h;
   return window.h * ez[(i - store.i0) + static_cast<std::size_t>(k - store.k0) * store.nx()];
 }
 double CutCells::fluid_fraction(int i, int k) const {
   if (!window.cells.contains(i, k)) out_of_window("fluid_fraction", i, k, window.cells);
+  if (!store.contains(i, k)) return 1.0;
   return fraction[(i - store.i0) + static_cast<std::size_t>(k - store.k0) * store.nx()];
 }
 int CutCells::cutting_body(int i, int k) const {
   if (!window.cells.contains(i, k)) out_of_window("cutting_body", i, k, window.cells);
+  if (!store.contains(i, k)) return -1;
   return body[(i - store.i0) + static_cast<std::size_t>(k - store.k0) * store.nx()];
 }
 int CutCells::cutting_obstacle(int i, int k) const {
   if (!window.cells.contains(i, k)) out_of_window("cutting_obstacle", i, k, window.cells);
+  if (!store.contains(i, k)) return -1;
   return obstacle[(i - store.i0) + static_cast<std::size_t>(k - store.k0) * store.nx()];
 }
 bool CutCells::dropped(int i, int k) const {
   if (!window.cells.contains(i, k)) out_of_window("dropped", i, k, window.cells);
+  if (!store.contains(i, k)) return false;
   return tiny[(i - store.i0) + static_cast<std::size_t>(k - store.k0) * store.nx()] != 0;
 }
 

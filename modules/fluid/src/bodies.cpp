@@ -106,7 +106,10 @@ Apertures body_apertures(const geometry::CutCells& cut, const grid::Decompositio
   Apertures E = open_apertures(d);
   for (const Axis a : grid::kAxes) {
     grid::FaceField& e = along(a, E.E_x, E.E_z);
-    const auto b = e.storage();
+    // faces outside the cut cells' storage are open (h), which leaves e as it is
+    const auto& st = cut.store;
+    const auto b = e.storage().intersect(
+        {st.i0, st.i1 + (a == Axis::X ? 1 : 0), st.k0, st.k1 + (a == Axis::Z ? 1 : 0)});
     for (int k = b.k0; k < b.k1; ++k)
       for (int i = b.i0; i < b.i1; ++i) e(i, k) = std::min(e(i, k), cut_aperture(cut, a, i, k));
   }

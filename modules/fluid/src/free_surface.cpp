@@ -20,9 +20,11 @@ void open_share_correction(grid::CellField& S, const geometry::CutCells& cut,
   // cell (i, k), so S is corrected in place.
   const auto nx = static_cast<std::size_t>(b.nx());
   std::vector<unsigned char> near(static_cast<std::size_t>(b.size()), 0);
-  const auto& st = cut.store;  // the cut cells' storage: their window grown by one cell
-  for (int k = b.k0; k < b.k1; ++k)
-    for (int i = b.i0; i < b.i1; ++i) {
+  // the cut cells' storage (geometry::CutCells::store): every cell outside it has fraction 1
+  const auto& st = cut.store;
+  const auto cut_part = b.intersect(st);
+  for (int k = cut_part.k0; k < cut_part.k1; ++k)
+    for (int i = cut_part.i0; i < cut_part.i1; ++i) {
       if (cut.fraction[static_cast<std::size_t>(k - st.k0) * static_cast<std::size_t>(st.nx()) +
                        static_cast<std::size_t>(i - st.i0)] == 1.0)
         continue;

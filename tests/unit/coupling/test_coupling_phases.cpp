@@ -220,7 +220,6 @@ TEST(CutCellsAhead, UsedOnlyForTheSceneAndWindowTheyWereBuiltFor) {
     fluid::Apertures E0, E;
     const auto fresh = coupling::place_solids(L, set, moving, {o}, E0, ahead);  // nothing kept
     EXPECT_EQ(ahead.valid, moving == nullptr);  // a still scene keeps what it built
-    ASSERT_FALSE(fresh.cut.fraction.empty());
     // kept cut cells marked so that their use shows; each key changed alone refuses them
     const auto keep = [&](auto change) {
       ahead = {true,
@@ -229,12 +228,12 @@ TEST(CutCellsAhead, UsedOnlyForTheSceneAndWindowTheyWereBuiltFor) {
                d.storage(grid::Stagger::Cell),
                fresh.cut,
                E0};
-      ahead.cut.fraction[0] = 42.0;
+      ahead.cut.pieces.push_back({});  // a piece no build makes (also where no body reaches)
       change(ahead);
     };
     keep([](coupling::CutCellsAhead&) {});
     auto used = coupling::place_solids(L, set, moving, {o}, E, ahead);
-    EXPECT_EQ(used.cut.fraction[0], 42.0);
+    EXPECT_EQ(used.cut.pieces.size(), fresh.cut.pieces.size() + 1);
     EXPECT_TRUE(E.E_x.data() == E0.E_x.data() && E.E_z.data() == E0.E_z.data());
     EXPECT_EQ(ahead.valid, moving == nullptr);
     const std::vector<void (*)(coupling::CutCellsAhead&)> changes = {

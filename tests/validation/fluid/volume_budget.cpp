@@ -78,14 +78,24 @@ bool next_to_solid(const geometry::CutCells& cut, const core::IndexBox& on_grid,
 // every other cell set to 0 (collective).
 double volume_next_to_solids(const grid::CellField& S, const grid::Decomposition& d,
                              const core::Comm& comm, const geometry::CutCells& cut) {
-  geometry::CutCells near = cut;
+  // stored over the whole window (the cut cells store only what their bodies reach)
+  geometry::CutCells near;
+  near.window = cut.window;
+  near.store = cut.window.cells;
+  const auto& st = near.store;
+  const auto nx = static_cast<std::size_t>(st.nx()), nz = static_cast<std::size_t>(st.nz());
+  near.ex.assign((nx + 1) * nz, 1.0);
+  near.ez.assign(nx * (nz + 1), 1.0);
+  near.fraction.assign(nx * nz, 0.0);
+  near.body.assign(nx * nz, -1);
+  near.obstacle.assign(nx * nz, -1);
+  near.tiny.assign(nx * nz, 0);
   const auto on_grid = d.spec().extent(grid::Stagger::Cell);
-  for (int k = cut.store.k0; k < cut.store.k1; ++k)
-    for (int i = cut.store.i0; i < cut.store.i1; ++i)
-      if (!next_to_solid(cut, on_grid, i, k))
-        near.fraction[static_cast<std::size_t>(k - cut.store.k0) *
-                          static_cast<std::size_t>(cut.store.nx()) +
-                      static_cast<std::size_t>(i - cut.store.i0)] = 0.0;
+  for (int k = st.k0; k < st.k1; ++k)
+    for (int i = st.i0; i < st.i1; ++i)
+      if (next_to_solid(cut, on_grid, i, k))
+        near.fraction[static_cast<std::size_t>(k - st.k0) * nx +
+                      static_cast<std::size_t>(i - st.i0)] = cut.fluid_fraction(i, k);
   return fluid::occupied_area(S, d, comm, &near);
 }
 

@@ -76,7 +76,9 @@ struct CutCells {
   /// Every (body, cell) boundary piece in the window, ordered by cell (k, then i), then body.
   std::vector<WettedPiece> pieces;
 
-  // Storage over the window grown by one cell (read through the accessors above).
+  // Storage over the part of the window grown by one cell that the bodies can touch, with a
+  // margin of a cell (read through the accessors above, which give an uncut cell's values
+  // outside it: E = h, fraction 1, no body, not dropped). Empty when no body reaches the window.
   IndexBox store;
   std::vector<double> ex, ez, fraction;
   std::vector<int> body, obstacle;
