@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 
 #include "picdem/core/error.hpp"
@@ -75,6 +76,7 @@ TEST(DemParameters, PolygonCentroidIsTheCentre) {
   const auto q =
       solids_from(read("solids:\n  tri:\n    type: polygon_file\n    file: "
                        "dem_test_triangle.txt\n    offset: [1, 0]\n    density: 1000\n"));
+  std::remove("dem_test_triangle.txt");
   ASSERT_EQ(q.size(), 1u);
   EXPECT_NEAR(q[0].state.x.x, 1.01, 1e-14);
   EXPECT_NEAR(q[0].state.x.z, 0.01, 1e-14);
