@@ -111,9 +111,9 @@ void from_grid(ParticleSet& p, const ParticleConfig& config, const FaceField& u_
       const detail::Stencil sw = detail::stencil(ax_w, pos);
       detail::check_in_storage(u_new, su, pos);
       detail::check_in_storage(w_new, sw, pos);
-      // APIC: v_p = u_new(x_p), C_p = grad u_new(x_p)
-      p.u[n] = detail::interpolate(u_new, su, h, p.cxx[n], p.cxz[n]);
-      p.w[n] = detail::interpolate(w_new, sw, h, p.czx[n], p.czz[n]);
+      // APIC: v_p = u_new(x_c), C_p = grad u_new(x_c) at the kernel centre x_c (stencil.hpp)
+      p.u[n] = detail::interpolate_at_centre(u_new, su, h, p.cxx[n], p.cxz[n]);
+      p.w[n] = detail::interpolate_at_centre(w_new, sw, h, p.czx[n], p.czz[n]);
     }
     return;
   }
@@ -148,8 +148,8 @@ core::Vec2 sample_with_gradient(const FaceField& u, const FaceField& w, const gr
   const detail::Stencil sw = detail::stencil(s, Stagger::FaceZ, p);
   detail::check_in_storage(u, su, p);
   detail::check_in_storage(w, sw, p);
-  const double vx = detail::interpolate(u, su, s.h, c[0], c[1]);
-  const double vz = detail::interpolate(w, sw, s.h, c[2], c[3]);
+  const double vx = detail::interpolate_at_centre(u, su, s.h, c[0], c[1]);
+  const double vz = detail::interpolate_at_centre(w, sw, s.h, c[2], c[3]);
   return {vx, vz};
 }
 

@@ -4,6 +4,8 @@
 // for bit, velocities to 1e-15).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "particle_testing.hpp"
 #include "picdem/core/error.hpp"
 #include "picdem/core/rng.hpp"
@@ -141,9 +143,15 @@ TEST(Reseed, KeepsCountsInBoundsIndependentlyOfRanks) {
     }
     if (all[n].id >= first_reseed_id(s, c) && all[n].id < 1000000) {  // not the extras
       ++added;
-      // new particles carry the grid velocity u = 0.5 + z, w = -0.3 x
-      EXPECT_NEAR(all[n].u, 0.5 + all[n].z, 1e-14);
-      EXPECT_NEAR(all[n].w, -0.3 * all[n].x, 1e-14);
+      // new particles carry the grid velocity u = 0.5 + z, w = -0.3 x, sampled as APIC's G2P
+      // samples it: at the kernel centre, which in the half cell next to a wall is the particle
+      // moved onto the outermost row of samples (u's rows at z = h/2 .. H - h/2, w's columns at
+      // x = h/2 .. L - h/2)
+      const double half = 0.5 * s.h;
+      const double zc = std::clamp(all[n].z, half, s.height() - half);
+      const double xc = std::clamp(all[n].x, half, s.length() - half);
+      EXPECT_NEAR(all[n].u, 0.5 + zc, 1e-14);
+      EXPECT_NEAR(all[n].w, -0.3 * xc, 1e-14);
       // and are never inside the solid block
       EXPECT_FALSE(all[n].x >= 0.875 && all[n].x <= 1.0 && all[n].z <= 0.2);
     }
