@@ -2,6 +2,7 @@
 
 #include "diagnostic_columns.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -63,9 +64,15 @@ Output::Output(core::Comm comm, const core::Params& params, const grid::Decompos
       dir_(std::move(directory)),
       interval_(params.real("output/interval")) {
   const bool append = resume != nullptr;
-  if (resume)
-    next_frame_ = resume->next_frame, frames_ = resume->frames,
-    last_frame_step_ = resume->last_frame_step;
+  if (resume) {
+    // output/interval may change on restart: the next frame is the checkpoint's or the first
+    // multiple of the new interval after the restart time, whichever comes first. With the
+    // interval unchanged the two agree (the checkpoint's was computed the same way from the last
+    // frame's time, which is at most resume_t), so an unchanged case restarts bitwise.
+    next_frame_ = std::min(resume->next_frame,
+                           interval_ * std::floor(resume_t / interval_ + 1e-9) + interval_);
+    frames_ = resume->frames, last_frame_step_ = resume->last_frame_step;
+  }
   if (comm_.is_root()) {
     fs::create_directories(dir_);
     fs::create_directories(dir_ + "/pictures");

@@ -2,7 +2,7 @@
 # Restart tests of the picdem executable (doc/restart.md). Each test runs in its own folder.
 # usage: restart_tests.sh PICDEM SOURCE_DIR WORK_DIR PYTHON TEST [TEST ARGS] -- MPIEXEC...
 #   TEST: bitwise N CASE | ranks N M | ranks_straddling N M | kill_during_write | sigterm | sigusr1 | bad_files | blow_up
-#         | schedule | layout | extend
+#         | schedule | layout | extend | frames
 set -u
 picdem=$1 src=$2 work=$3 python=$4 test=$5
 shift 5
@@ -333,6 +333,26 @@ schedule)
   got=$(ls "$W/A/checkpoints" | tr '\n' ' ')
   [ "$got" = "checkpoint_00000004.h5 checkpoint_00000008.h5 checkpoint_00000010.h5 " ] ||
     fail "every_steps/at_end left: $got"
+  ;;
+frames)
+  # output/interval may change on restart (doc/restart.md): a run to 0.05 s with one frame a
+  # second, continued to 0.1 s with a frame every 0.01 s, writes the continued run's frames at
+  # 0.06, 0.07, 0.08, 0.09 and 0.1 s. (Before, the checkpoint's next frame time, 1 s, held until
+  # it was reached: no frame but the end one.)
+  read -r -a c <<< "$(case_args floating_disk)"
+  quiet=(--set output/progress_seconds=0 --set checkpoint/at_end=true --set output/png=false)
+  "$picdem" "${c[@]}" "${quiet[@]}" --set time/end=0.05 --set output/interval=1 -o "$W/A" \
+    > "$W/A.log" 2>&1 || fail "run to 0.05 s failed"
+  before=$(ls "$W/A/frames" | grep -c '\.h5$')
+  "$picdem" "${c[@]}" "${quiet[@]}" --set time/end=0.1 --set output/interval=0.01 \
+    --restart latest -o "$W/A" > "$W/A2.log" 2>&1 || fail "continued run failed: $(tail -3 "$W/A2.log")"
+  times=$("$python" -c '
+import re, sys
+t = [float(x) for x in re.findall(r"<Time Value=\"([^\"]+)\"", open(sys.argv[1]).read())]
+print(" ".join("%.2f" % x for x in t if x > 0.0501))' "$W/A/cells.xdmf")
+  [ "$times" = "0.06 0.07 0.08 0.09 0.10" ] ||
+    fail "frames after the restart at: '$times' (expected 0.06 0.07 0.08 0.09 0.10; $before before)"
+  echo "frames after the restart with output/interval 1 -> 0.01: $times"
   ;;
 *)
   fail "unknown test $test"
