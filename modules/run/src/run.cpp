@@ -84,7 +84,17 @@ void Run::run(long long max_steps) {
       sim_.step();
     }
     const coupling::Diagnostics& diag = sim_.diagnostics();
-    check_step(diag, h, sim_.has_fluid(), grid_speed, sim_.dem(), comm);
+    try {
+      check_step(diag, h, sim_.has_fluid(), grid_speed, sim_.dem(), comm);
+    } catch (const core::SolverError&) {
+      // Every rank throws (check_step decides on reduced figures): the blown-up step's state is
+      // written as the last frame and row, so that the user sees where it went wrong.
+      if (output_) {
+        output_->record(diag);
+        output_->frame(sim_, true);
+      }
+      throw;
+    }
     if (output_) {
       output_->record(diag);
       if (output_->forces_due(sim_.time())) output_->forces(sim_.time(), body_forces(sim_));

@@ -277,6 +277,10 @@ blow_up)
   step=$(sed -n 's/.*the run stopped: step \([0-9]*\) at t.*/\1/p' "$W/A.log")
   last=$(ls "$W/A/checkpoints" | sed -n 's/checkpoint_0*\([0-9]*\)\.h5$/\1/p' | sort -n | tail -1)
   [ "$last" = $((step - 1)) ] || fail "newest checkpoint is of step $last, blown step $step"
+  # the blown-up step's state is the last frame and the last row of timeseries.csv (to see where)
+  [ -f "$W/A/frames/$(printf 'frame_%06d.h5' "$step")" ] || fail "no frame of the blown-up step $step"
+  row=$(tail -1 "$W/A/timeseries.csv" | cut -d, -f3)
+  [ "$row" = "$step" ] || fail "last timeseries.csv row is of step $row, blown step $step"
   run 1 "$W/B" "${bad[@]}" --max-steps $((step - 1)) --restart latest \
     --set checkpoint/directory="$W/A/checkpoints"
   expect_ok $? "$W/B"
