@@ -54,6 +54,12 @@ io::SnapshotStyle snapshot_style(const core::Params& params, const grid::GridSpe
   return s;
 }
 
+// The first multiple of `interval` after t (t itself counts as reached within 1e-9 intervals), the
+// next frame or forces row due: a function of t alone, so a restart continues the same series.
+double next_multiple(double t, double interval) {
+  return interval * std::floor(t / interval + 1e-9) + interval;
+}
+
 }  // namespace
 
 Output::Output(core::Comm comm, const core::Params& params, const grid::Decomposition& d,
@@ -69,8 +75,7 @@ Output::Output(core::Comm comm, const core::Params& params, const grid::Decompos
     // multiple of the new interval after the restart time, whichever comes first. With the
     // interval unchanged the two agree (the checkpoint's was computed the same way from the last
     // frame's time, which is at most resume_t), so an unchanged case restarts bitwise.
-    next_frame_ = std::min(resume->next_frame,
-                           interval_ * std::floor(resume_t / interval_ + 1e-9) + interval_);
+    next_frame_ = std::min(resume->next_frame, next_multiple(resume_t, interval_));
     frames_ = resume->frames, last_frame_step_ = resume->last_frame_step;
   }
   if (comm_.is_root()) {
@@ -102,9 +107,7 @@ Output::Output(core::Comm comm, const core::Params& params, const grid::Decompos
       append, resume_t);
   forces_interval_ = params.real("output/forces_interval");
   // the next time due, a function of t alone (a restart continues the same series)
-  if (forces_interval_ > 0.0 && resume)
-    next_forces_ =
-        forces_interval_ * std::floor(resume_t / forces_interval_ + 1e-9) + forces_interval_;
+  if (forces_interval_ > 0.0 && resume) next_forces_ = next_multiple(resume_t, forces_interval_);
 }
 
 Output::~Output() = default;
@@ -126,8 +129,7 @@ void Output::forces(double t, const std::vector<BodyForces>& rows) {
   for (const auto& r : rows)
     forces_->row({t, static_cast<double>(r.id), r.obstacle ? 1.0 : 0.0, r.pressure.x, r.pressure.z,
                   r.viscous.x, r.viscous.z, r.torque_pressure, r.torque_viscous});
-  if (forces_interval_ > 0.0)
-    next_forces_ = forces_interval_ * std::floor(t / forces_interval_ + 1e-9) + forces_interval_;
+  if (forces_interval_ > 0.0) next_forces_ = next_multiple(t, forces_interval_);
 }
 
 void Output::frame(const coupling::Simulation& sim, bool force) {
@@ -135,7 +137,7 @@ void Output::frame(const coupling::Simulation& sim, bool force) {
   if (!force && t < next_frame_ - 1e-12 * std::max(1.0, interval_)) return;
   write_frame(sim);
   ++frames_;
-  next_frame_ = interval_ * std::floor(t / interval_ + 1e-9) + interval_;
+  next_frame_ = next_multiple(t, interval_);
 }
 
 void Output::write_frame(const coupling::Simulation& sim) {
