@@ -182,6 +182,10 @@ void Simulation::step() {
     if (m.dem && !m.viscous.solids.empty())
       collision = fluid::plus_viscous(collision, m.viscous, m.dem->owned());
     solve = solve_pressure(L, set, solids, collision, dt, *m.pressure, m.fluid);  // pressure
+    if (solve.preconditioner_retries > 0)
+      core::log(m.comm, "picdem: step " + std::to_string(m.step + 1) +
+                            ": CG broke down on an indefinite preconditioner; solved again with "
+                            "solver/MueLu_solids merged (doc/fluid.md)");
     project(L, set, dt, m.fluid);                                                 // project
     if (set.fluid.open.any())  // volumes through the open sides (doc/open_boundaries.md)
       open_flux = fluid::open_fluxes(m.fluid.u, m.fluid.w, set.fluid.open, L.d, m.comm);

@@ -194,9 +194,10 @@ std::string breakdown_message(bool density, const std::string& what) {
 
 /// Belos CG from the system's x; the implicit residual may drift from the true one, so after the
 /// solve ||b - A x|| / ||b|| is computed and the solve restarts once from the reached x if it is
-/// above the tolerance. Adds the iterations and sets the true residual in `stats`.
-void run_cg(const detail::TpetraSystem& ts, const RCP<OP>& prec, const SolverSettings& settings,
-            double b_norm, SolveStats& stats) {
+/// above the tolerance. Adds the iterations and sets the true residual in `stats`. False, with
+/// the message in `breakdown`, when CG broke down (p^T A p <= 0).
+bool run_cg(const detail::TpetraSystem& ts, const RCP<OP>& prec, const SolverSettings& settings,
+            double b_norm, SolveStats& stats, std::string& breakdown) {
   core::ScopedTimer timer(settings.density ? "fluid: density solve" : "fluid: pressure solve");
   const auto& A = ts.op();
   auto true_residual = [&]() {
@@ -224,7 +225,8 @@ void run_cg(const detail::TpetraSystem& ts, const RCP<OP>& prec, const SolverSet
       solver.solve();
     } catch (const Belos::BelosError& e) {
       // p^T A p <= 0 is a global reduction: every rank throws here alike
-      throw core::SolverError(breakdown_message(settings.density, e.what()));
+      breakdown = breakdown_message(settings.density, e.what());
+      return false;
     }
     stats.iterations += solver.getNumIters();
     stats.relative_residual = true_residual();
@@ -232,6 +234,7 @@ void run_cg(const detail::TpetraSystem& ts, const RCP<OP>& prec, const SolverSet
     problem->setProblem();
     solver.reset(Belos::Problem);
   }
+  return true;
 }
 
 /// Solves the rows with the kept Tpetra system `ts`, starting from x (one value per row), which
@@ -265,7 +268,19 @@ SolveStats solve_rows(detail::TpetraSystem& ts, const grid::Decomposition& d,
   stats.low_rank_entries = ts.low_rank_entries();
   stats.setup_seconds = seconds_since(t0);
   const auto t1 = std::chrono::steady_clock::now();
-  run_cg(ts, prec, settings, b_norm, stats);
+  const MV x0(*ts.x(), Teuchos::Copy);  // the start, for a second attempt
+  std::string breakdown;
+  if (!run_cg(ts, prec, settings, b_norm, stats, breakdown)) {
+    // CG's p^T A p <= 0 with a positive definite operator: the preconditioner is indefinite.
+    // Chebyshev's largest-eigenvalue estimate missed the large eigenvalues of a light solid's
+    // cut cells (doc/performance.md). Once more from the same start, with solver/MueLu_solids
+    // (its 30-step estimate) merged in, whatever the coupling operator.
+    if (!rows.with_solids || blocks) throw core::SolverError(breakdown);
+    ts.x()->assign(x0);
+    const RCP<OP> safe = preconditioner(ts, settings, true, matrix_rows, comm.size(), interpreters);
+    ++stats.preconditioner_retries;
+    if (!run_cg(ts, safe, settings, b_norm, stats, breakdown)) throw core::SolverError(breakdown);
+  }
   stats.solve_seconds = seconds_since(t1);
   x = ts.solution();
   if (!(stats.relative_residual <= settings.tolerance)) {

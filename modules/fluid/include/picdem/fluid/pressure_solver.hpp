@@ -51,6 +51,7 @@ struct SolveStats {
   bool reused_structure = false;   ///< the Tpetra structure of the last solve was reused
   long long matrix_entries = 0;    ///< global entries of the matrix MueLu was built on
   long long low_rank_entries = 0;  ///< global entries of U (solver/coupling_operator low_rank)
+  int preconditioner_retries = 0;  ///< solves again after CG broke down (solver/MueLu_solids)
 };
 
 /// The assembled system in plain arrays (for tests and diagnostics): rows are this rank's owned
