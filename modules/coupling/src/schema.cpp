@@ -35,6 +35,9 @@ void declare_coupling(core::ParamSchema& s) {
             "viscous step (stable for light solids; 2 more solves per component and solid); "
             "false: the split, the fluid's wall value the solid's start-of-step velocity, unstable "
             "for solids much lighter than the fluid (doc/viscous.md)");
+  s.boolean("coupling/mixture_cut_faces", false,
+            "hand the particles the mixture velocity (E u + (h - E) U_body) / h of the faces "
+            "bodies cut, not the fluid's velocity through the open length E (doc/coupling.md)");
   s.real("coupling/tiny_cell_fraction", 1e-3,
          "cut cells with a smaller fluid fraction are made solid (doc/geometry.md)")
       .at_least(0.0)

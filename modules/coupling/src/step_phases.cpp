@@ -35,6 +35,7 @@ StepSettings step_settings_from(const core::Params& params) {
   s.beta = params.real("coupling/beta");
   s.viscous_rigid_rows = params.boolean("coupling/viscous_rigid_rows");
   s.tiny_fraction = params.real("coupling/tiny_cell_fraction");
+  s.mixture_cut_faces = params.boolean("coupling/mixture_cut_faces");
   s.level_probes = params.reals("output/level_probes");
   s.solid_count_box = params.reals("output/solid_count_box");
   if (!s.has_fluid) return s;
@@ -221,9 +222,12 @@ void grid_to_particles(const Layout& L, const StepSettings& set, const SolidsAtS
   // the faces closed by bodies at X^n carry their velocities at X^{n+1}; the fluid-face mask of
   // P2G is kept (cells and apertures unchanged since)
   const geometry::CutCells* cut = set.has_bodies ? &solids.cut : nullptr;
-  fluid::extend_around_fluid(dem::motions_at(solids.scene, after), cut, L.d, L.halo, false, f);
+  const auto motions = dem::motions_at(solids.scene, after);
+  fluid::extend_around_fluid(motions, cut, L.d, L.halo, false, f);
   fluid::enforce_walls(f.u, f.w, set.fluid, L.d);
   if (set.has_bodies) fluid::rigid_faces_into_flip_base(set.spec, f);
+  // the particles and their advection see the cut faces' mixture velocity
+  if (cut && set.mixture_cut_faces) fluid::mix_cut_faces(motions, *cut, L.d, f);
   particles::from_grid(particles, set.particles, f.u_old, f.w_old, f.u, f.w, set.spec);
   if (dem && set.beta < 1.0)
     damp_gap_particles(particles, dem::all_contacts(*dem, L.comm), set.spec.h, set.beta);

@@ -47,6 +47,7 @@ struct StepSettings {
   double tiny_fraction = 0;         ///< coupling/tiny_cell_fraction
   double beta = 1.0;                ///< coupling/beta, eq. 20
   bool viscous_rigid_rows = false;  ///< coupling/viscous_rigid_rows (doc/viscous.md)
+  bool mixture_cut_faces = false;   ///< coupling/mixture_cut_faces (fluid::mix_cut_faces)
   fluid::QuadratureOptions quadrature;
   double particle_mass = 0.0;                         ///< per unit depth
   std::vector<double> level_probes, solid_count_box;  ///< output/*

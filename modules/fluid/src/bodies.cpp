@@ -128,11 +128,14 @@ geometry::CutCells cut_cells(const std::vector<geometry::SolidPlacement>& solids
   return cut;
 }
 
-void rigid_face_velocities(const std::vector<core::SolidState>& bodies,
-                           const geometry::CutCells& cut, const Apertures& E,
-                           const grid::Decomposition& d, grid::FaceField& u, grid::FaceField& w,
-                           grid::GridArray<signed char>& u_valid,
-                           grid::GridArray<signed char>& w_valid) {
+namespace {
+
+/// Visits every interior face (storage) beside a cell cut by a body or an obstacle:
+/// fn(axis, i, k, U_n) with U_n the normal component of the covering body's rigid velocity
+/// v + omega x r at the face's centre (0 for an obstacle), bodies[b] the motion of cut body b.
+template <class Fn>
+void for_faces_by_bodies(const std::vector<core::SolidState>& bodies, const geometry::CutCells& cut,
+                         const grid::Decomposition& d, Fn&& fn) {
   const auto& spec = d.spec();
   auto rigid = [&](int body, Vec2 x) {
     if (body < 0) return Vec2{};
@@ -150,23 +153,46 @@ void rigid_face_velocities(const std::vector<core::SolidState>& bodies,
     return body;
   };
   for (const Axis a : grid::kAxes) {
-    grid::FaceField& vel = along(a, u, w);
-    grid::GridArray<signed char>& valid = along(a, u_valid, w_valid);
-    const grid::FaceField& aperture = along(a, E.E_x, E.E_z);
     // the face (i, k) normal to a lies between the cells (i - di, k - dk) and (i, k)
     const int di = grid::step_i(a), dk = grid::step_k(a);
-    const auto b = vel.storage();
+    const auto b = d.storage(face_stagger(a));
     for (int k = b.k0; k < b.k1; ++k)
       for (int i = b.i0; i < b.i1; ++i) {
-        if (i - di < 0 || i >= spec.nx || k - dk < 0 || k >= spec.nz || aperture(i, k) > 0.0)
-          continue;
+        if (i - di < 0 || i >= spec.nx || k - dk < 0 || k >= spec.nz) continue;
         bool any = false;
         const int body = covering(i - di, k - dk, i, k, any);
         if (!any) continue;
-        vel(i, k) = component(rigid(body, spec.position(face_stagger(a), i, k)), a);
-        valid(i, k) = 1;
+        fn(a, i, k, [&] { return component(rigid(body, spec.position(face_stagger(a), i, k)), a); });
       }
   }
+}
+
+}  // namespace
+
+void rigid_face_velocities(const std::vector<core::SolidState>& bodies,
+                           const geometry::CutCells& cut, const Apertures& E,
+                           const grid::Decomposition& d, grid::FaceField& u, grid::FaceField& w,
+                           grid::GridArray<signed char>& u_valid,
+                           grid::GridArray<signed char>& w_valid) {
+  for_faces_by_bodies(bodies, cut, d, [&](Axis a, int i, int k, auto rigid_normal) {
+    if (along(a, E.E_x, E.E_z)(i, k) > 0.0) return;
+    along(a, u, w)(i, k) = rigid_normal();
+    along(a, u_valid, w_valid)(i, k) = 1;
+  });
+}
+
+void mix_cut_faces(const std::vector<core::SolidState>& bodies, const geometry::CutCells& cut,
+                   const grid::Decomposition& d, FluidState& f) {
+  const double h = d.spec().h;
+  for_faces_by_bodies(bodies, cut, d, [&](Axis a, int i, int k, auto rigid_normal) {
+    const double e = along(a, f.apertures.E_x, f.apertures.E_z)(i, k) / h;
+    if (!(e > 0.0 && e < 1.0)) return;
+    const double U = rigid_normal();
+    double& now = along(a, f.u, f.w)(i, k);
+    double& old = along(a, f.u_old, f.w_old)(i, k);
+    now = e * now + (1.0 - e) * U;
+    old = e * old + (1.0 - e) * U;
+  });
 }
 
 void extend_around_fluid(const std::vector<core::SolidState>& motions,

@@ -122,3 +122,43 @@ TEST(RigidFaceVelocities, FlipBaseOnClosedFacesAndReseedMask) {
           << i << " " << k;
     }
 }
+
+// The mixture velocity (E u + (h - E) U_n) / h on the faces the body and the obstacle cut, in u
+// and u_old alike; closed, open and wall faces untouched. Hand-worked open fractions e = E / h:
+// the body's edges at 0.15 and 0.45 halve FaceX (2..4, 1), (2..4, 4) and FaceZ (1, 2..4),
+// (4, 2..4); the obstacle leaves e = 0.5 on FaceX (6, 0), 0.3 on (6, 2), 0.7 on FaceZ (5, 1..2)
+// and 0.1 on (6, 1..2).
+TEST(MixCutFaces, FluxPerLengthOfFluidAndSolid) {
+  Scene s;
+  const auto& d = *s.d;
+  fluid::FluidState f(d);
+  f.apertures = s.E;
+  f.u.fill(1.0), f.w.fill(1.0), f.u_old.fill(3.0), f.w_old.fill(3.0);
+  core::SolidState body;
+  body.id = 4, body.x = {0.3, 0.3}, body.v = {0.1, -0.2}, body.omega = 2.0;
+  fluid::mix_cut_faces({body}, s.cut, d, f);
+  // (e, U_n) of every cut face; U_n: u = 0.1 - 2 (z - 0.3), w = -0.2 + 2 (x - 0.3), obstacle 0
+  auto expect = [](double got, double e, double U, double v, const char* what, int i, int k) {
+    EXPECT_NEAR(got, e * v + (1.0 - e) * U, 1e-12) << what << " " << i << " " << k;
+  };
+  for (int k = 0; k < 6; ++k)
+    for (int i = 0; i <= 8; ++i) {
+      double e = 1.0, U = 0.0;
+      if (i >= 2 && i <= 4 && k == 1) e = 0.5, U = 0.4;   // z = 0.15
+      if (i >= 2 && i <= 4 && k == 4) e = 0.5, U = -0.2;  // z = 0.45
+      if (i == 6 && k == 0) e = 0.5;
+      if (i == 6 && k == 2) e = 0.3;
+      expect(f.u(i, k), e, U, 1.0, "u", i, k);
+      expect(f.u_old(i, k), e, U, 3.0, "u_old", i, k);
+    }
+  for (int k = 0; k <= 6; ++k)
+    for (int i = 0; i < 8; ++i) {
+      double e = 1.0, U = 0.0;
+      if (i == 1 && k >= 2 && k <= 4) e = 0.5, U = -0.5;  // x = 0.15
+      if (i == 4 && k >= 2 && k <= 4) e = 0.5, U = 0.1;   // x = 0.45
+      if (i == 5 && (k == 1 || k == 2)) e = 0.7;
+      if (i == 6 && (k == 1 || k == 2)) e = 0.1;
+      expect(f.w(i, k), e, U, 1.0, "w", i, k);
+      expect(f.w_old(i, k), e, U, 3.0, "w_old", i, k);
+    }
+}

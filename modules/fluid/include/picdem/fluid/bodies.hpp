@@ -53,6 +53,15 @@ void extend_around_fluid(const std::vector<core::SolidState>& motions,
                          const geometry::CutCells* cut, const grid::Decomposition& d,
                          const grid::Halo& halo, bool recompute_mask, FluidState& f);
 
+/// The mixture velocity on the faces a body cuts (0 < E < h): (E u + (h - E) U_n) / h in u and
+/// u_old alike, U_n the normal rigid velocity of the covering body (bodies[b] the motion of cut
+/// body b; obstacles: 0). It is the face's whole flux per length, fluid and solid, so it is
+/// continuous with the closed faces' rigid velocity as E -> 0 and discretely divergence-free
+/// over full cells; a sliver's fluid velocity (flux through a tiny E) is not handed to the
+/// particles beside it (coupling/mixture_cut_faces, doc/coupling.md).
+void mix_cut_faces(const std::vector<core::SolidState>& bodies, const geometry::CutCells& cut,
+                   const grid::Decomposition& d, FluidState& f);
+
 /// u_old = u on the closed interior faces: the FLIP increment u - u_old is the fluid's change
 /// only, not a body sweeping over a face.
 void rigid_faces_into_flip_base(const grid::GridSpec& spec, FluidState& f);
