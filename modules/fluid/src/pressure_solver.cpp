@@ -273,8 +273,8 @@ SolveStats solve_rows(detail::TpetraSystem& ts, const grid::Decomposition& d,
   if (!run_cg(ts, prec, settings, b_norm, stats, breakdown)) {
     // CG's p^T A p <= 0 with a positive definite operator: the preconditioner is indefinite.
     // Chebyshev's largest-eigenvalue estimate missed the large eigenvalues of a light solid's
-    // cut cells (doc/performance.md). Once more from the same start, with solver/MueLu_solids
-    // (its 30-step estimate) merged in, whatever the coupling operator.
+    // cut cells (doc/performance.md). With the low-rank operator (the assembled one has
+    // solver/MueLu_solids already): once more from the same start, with it merged in.
     if (!rows.with_solids || blocks) throw core::SolverError(breakdown);
     ts.x()->assign(x0);
     const RCP<OP> safe = preconditioner(ts, settings, true, matrix_rows, comm.size(), interpreters);
