@@ -142,14 +142,13 @@ void for_faces_by_bodies(const std::vector<core::SolidState>& bodies, const geom
     const auto& st = bodies[static_cast<std::size_t>(body)];
     return st.v + core::cross(st.omega, x - st.x);
   };
-  // The body covering either cell beside a face (cells outside the window count as uncovered).
+  // The body covering either cell beside a face, the low cell's first. A face on the window's
+  // edge has one cell in the ring outside it, which the cut cells know as well: every rank picks
+  // the body a whole-grid window would.
   auto covering = [&](int i0, int k0, int i1, int k1, bool& any) {
-    const auto& win = cut.window.cells;
-    const bool in0 = win.contains(i0, k0), in1 = win.contains(i1, k1);
-    int body = in0 ? cut.cutting_body(i0, k0) : -1;
-    if (body < 0 && in1) body = cut.cutting_body(i1, k1);
-    any = body >= 0 || (in0 && cut.cutting_obstacle(i0, k0) >= 0) ||
-          (in1 && cut.cutting_obstacle(i1, k1) >= 0);
+    int body = cut.cutting_body(i0, k0);
+    if (body < 0) body = cut.cutting_body(i1, k1);
+    any = body >= 0 || cut.cutting_obstacle(i0, k0) >= 0 || cut.cutting_obstacle(i1, k1) >= 0;
     return body;
   };
   for (const Axis a : grid::kAxes) {

@@ -84,6 +84,18 @@ TEST(CutCellsRanks, OwnedDataEqualsTheWholeGridComputation) {
       dropped += a.dropped(i, k) ? 1 : 0;
     }
   }
+  // The ring just outside the window knows its covering bodies as the whole grid does (faces on
+  // the window's edge pick their body from both sides).
+  const auto ring = mine.cells.grown(1).intersect(all.cells);
+  long long ring_cells = 0;
+  for (int k = ring.k0; k < ring.k1; ++k)
+    for (int i = ring.i0; i < ring.i1; ++i) {
+      if (mine.cells.contains(i, k)) continue;
+      ASSERT_EQ(a.cutting_body(i, k), b.cutting_body(i, k)) << "ring " << i << " " << k;
+      ASSERT_EQ(a.cutting_obstacle(i, k), b.cutting_obstacle(i, k)) << "ring " << i << " " << k;
+      ++ring_cells;
+    }
+  EXPECT_EQ(ring_cells > 0, comm.size() > 1);
   // Faces owned by the last block along each direction.
   for (int k = own.k0; k < own.k1; ++k) ASSERT_EQ(a.E_x(own.i1, k), b.E_x(own.i1, k));
   for (int i = own.i0; i < own.i1; ++i) ASSERT_EQ(a.E_z(i, own.k1), b.E_z(i, own.k1));

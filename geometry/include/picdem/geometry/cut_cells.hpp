@@ -67,8 +67,10 @@ struct CutCells {
   double fluid_fraction(int i, int k) const;
   /// The solid covering the largest part of the cell (the lower index on ties); a solid whose
   /// boundary merely lies on the cell's edge counts with area 0. -1 when no solid touches it.
+  /// Defined on the window grown by one cell as well (the ring's values are those of a window
+  /// that holds it), so that a face on the window's edge sees the bodies on both sides.
   int cutting_body(int i, int k) const;
-  /// The same for obstacles: obstacle index, -1 none.
+  /// The same for obstacles: obstacle index, -1 none (also on the grown ring).
   int cutting_obstacle(int i, int k) const;
   /// True when the cell was dropped as tiny (fraction below CutCellOptions::tiny_fraction).
   bool dropped(int i, int k) const;
