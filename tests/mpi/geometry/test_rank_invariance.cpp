@@ -2,44 +2,17 @@
 // plus halo) and compares the cells and faces it owns with a computation over the whole grid.
 #include <gtest/gtest.h>
 
-#include <map>
-#include <memory>
-#include <random>
 #include <tuple>
 
+#include "cut_scene.hpp"
 #include "picdem/core/comm.hpp"
-#include "picdem/geometry/circle.hpp"
 #include "picdem/geometry/cut_cells.hpp"
-#include "picdem/geometry/obstacles.hpp"
-#include "picdem/geometry/polygon.hpp"
 #include "picdem/grid/grid.hpp"
 
 using namespace picdem;
 using namespace picdem::geometry;
 
 namespace {
-
-std::vector<SolidPlacement> scene() {
-  std::mt19937_64 rng(3);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::vector<SolidPlacement> s;
-  for (int j = 0; j < 40; ++j) {
-    ShapePtr shape;
-    if (j % 2 == 0) {
-      shape = std::make_shared<Circle>(0.01 + 0.05 * u(rng));
-    } else {
-      std::vector<Vec2> v;
-      const int n = 3 + j % 9;
-      for (int q = 0; q < n; ++q) {
-        const double phi = 2 * M_PI * (q + 0.7 * u(rng)) / n, r = 0.02 + 0.04 * u(rng);
-        v.push_back({r * std::cos(phi), r * std::sin(phi)});
-      }
-      shape = std::make_shared<Polygon>(v);
-    }
-    s.push_back({j, shape, {{0.05 + 0.9 * u(rng), 0.05 + 0.7 * u(rng)}, 6.0 * u(rng)}});
-  }
-  return s;
-}
 
 using PieceKey = std::tuple<int, int, int, double, double>;
 
@@ -52,18 +25,8 @@ TEST(CutCellsRanks, OwnedDataEqualsTheWholeGridComputation) {
   spec.h = 1.0 / 64;
   core::Comm comm;
   const grid::Decomposition d(spec, comm, 2);
-  FallPipe pipe;
-  pipe.centre_x = 0.5;
-  pipe.inner_width = 0.1;
-  pipe.wall_thickness = 0.02;
-  pipe.bottom = 0.2;
-  pipe.top = 0.6;
-  pipe.funnel_top_width = 0.3;
-  pipe.funnel_height = 0.1;
-  pipe.hole_size = 0.03;
-  pipe.hole_spacing = 0.1;
-  const std::vector<Obstacle> obstacles{{"pipe", fall_pipe_polygons(pipe, "pipe")}};
-  const auto solids = scene();
+  const auto obstacles = test_support::perforated_pipe();
+  const auto solids = test_support::random_solids(3, 0.05, 9);
   const CutCellOptions opt;  // default tiny-cell rule, so dropping is covered too
 
   const GridWindow mine{spec.origin, spec.h, d.storage(grid::Stagger::Cell)};

@@ -6,42 +6,16 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <memory>
-#include <random>
 
+#include "cut_scene.hpp"
 #include "picdem/core/comm.hpp"
 #include "picdem/fluid/bodies.hpp"
-#include "picdem/geometry/circle.hpp"
-#include "picdem/geometry/obstacles.hpp"
-#include "picdem/geometry/polygon.hpp"
 
 using namespace picdem;
 using core::Vec2;
 using grid::Stagger;
 
 namespace {
-
-std::vector<geometry::SolidPlacement> scene() {
-  std::mt19937_64 rng(5);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::vector<geometry::SolidPlacement> s;
-  for (int j = 0; j < 40; ++j) {
-    geometry::ShapePtr shape;
-    if (j % 2 == 0) {
-      shape = std::make_shared<geometry::Circle>(0.01 + 0.04 * u(rng));
-    } else {
-      std::vector<Vec2> v;
-      const int n = 3 + j % 7;
-      for (int q = 0; q < n; ++q) {
-        const double phi = 2 * M_PI * (q + 0.7 * u(rng)) / n, r = 0.015 + 0.035 * u(rng);
-        v.push_back({r * std::cos(phi), r * std::sin(phi)});
-      }
-      shape = std::make_shared<geometry::Polygon>(v);
-    }
-    s.push_back({j, shape, {{0.05 + 0.9 * u(rng), 0.05 + 0.65 * u(rng)}, 6.0 * u(rng)}});
-  }
-  return s;
-}
 
 std::vector<core::SolidState> motions(const std::vector<geometry::SolidPlacement>& placed) {
   std::mt19937_64 rng(11);
@@ -100,19 +74,8 @@ TEST(BodyFacesRanks, StoredFacesEqualTheWholeGridComputation) {
   spec.nz = 48;
   spec.h = 1.0 / 64;
   core::Comm comm;
-  geometry::FallPipe pipe;
-  pipe.centre_x = 0.5;
-  pipe.inner_width = 0.1;
-  pipe.wall_thickness = 0.02;
-  pipe.bottom = 0.2;
-  pipe.top = 0.6;
-  pipe.funnel_top_width = 0.3;
-  pipe.funnel_height = 0.1;
-  pipe.hole_size = 0.03;
-  pipe.hole_spacing = 0.1;
-  const std::vector<geometry::Obstacle> obstacles{
-      {"pipe", geometry::fall_pipe_polygons(pipe, "pipe")}};
-  const auto placed = scene();
+  const auto obstacles = test_support::perforated_pipe();
+  const auto placed = test_support::random_solids(5, 0.04, 7);
   const int halo = 3;  // the production width (coupling: max(3, what the schemes need))
   const grid::Decomposition mine(spec, comm, halo);
   const grid::Decomposition whole(spec, core::Comm(MPI_COMM_SELF), halo);
