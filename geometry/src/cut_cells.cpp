@@ -299,12 +299,14 @@ double CutCells::fluid_fraction(int i, int k) const {
   return fraction[(i - store.i0) + static_cast<std::size_t>(k - store.k0) * store.nx()];
 }
 int CutCells::cutting_body(int i, int k) const {
-  if (!window.cells.grown(1).contains(i, k)) out_of_window("cutting_body", i, k, window.cells.grown(1));
+  if (!window.cells.grown(1).contains(i, k))
+    out_of_window("cutting_body", i, k, window.cells.grown(1));
   if (!store.contains(i, k)) return -1;
   return body[(i - store.i0) + static_cast<std::size_t>(k - store.k0) * store.nx()];
 }
 int CutCells::cutting_obstacle(int i, int k) const {
-  if (!window.cells.grown(1).contains(i, k)) out_of_window("cutting_obstacle", i, k, window.cells.grown(1));
+  if (!window.cells.grown(1).contains(i, k))
+    out_of_window("cutting_obstacle", i, k, window.cells.grown(1));
   if (!store.contains(i, k)) return -1;
   return obstacle[(i - store.i0) + static_cast<std::size_t>(k - store.k0) * store.nx()];
 }

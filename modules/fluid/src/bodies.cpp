@@ -161,7 +161,8 @@ void for_faces_by_bodies(const std::vector<core::SolidState>& bodies, const geom
         bool any = false;
         const int body = covering(i - di, k - dk, i, k, any);
         if (!any) continue;
-        fn(a, i, k, [&] { return component(rigid(body, spec.position(face_stagger(a), i, k)), a); });
+        fn(a, i, k,
+           [&] { return component(rigid(body, spec.position(face_stagger(a), i, k)), a); });
       }
   }
 }

@@ -39,8 +39,8 @@ struct Faces {
       : f(d) {
     const auto& spec = d.spec();
     const auto cut = fluid::cut_cells(placed, obstacles, 1e-3, d, f.apertures);
-    for (auto [v, v_old, s] : {std::tuple{&f.u, &f.u_old, Stagger::FaceX},
-                               std::tuple{&f.w, &f.w_old, Stagger::FaceZ}}) {
+    for (auto [v, v_old, s] :
+         {std::tuple{&f.u, &f.u_old, Stagger::FaceX}, std::tuple{&f.w, &f.w_old, Stagger::FaceZ}}) {
       const auto b = v->storage();
       for (int k = b.k0; k < b.k1; ++k)
         for (int i = b.i0; i < b.i1; ++i) {
