@@ -25,7 +25,8 @@ From their timeseries.csv and solids.csv:
   - the dump finishes: no cylinder in the pipe and funnel at T_END (timeseries solids_in_box, the
     cylinders whose centre lies in the case's solid_count_box, the pipe and funnel above the
     pipe's lower end: 0; a cylinder thrown over the funnel's rim counts as out, as in the
-    section's figures);
+    section's figures; the emptying time is the first step with none, after which a cylinder
+    can be lifted back into the outlet, hence the check at T_END);
   - the paper's delay: the continuous pipe empties later than the perforated one (the reversed
     flow "slows down and even lifts up the cylinders": "a delay of the solid dumping"; through the
     holes "the cylinders are quickly dumped out without delay");
@@ -188,8 +189,8 @@ def main():
     for fig in (cont, perf, mix):
         health(fig, failures)
     for fig in (cont, perf):
-        if fig["empty"] is None:
-            failures.append(f"{fig['name']}: {fig['left_at_end']} cylinders still in the pipe at "
+        if fig["left_at_end"] != 0:  # a cylinder can be lifted back into the outlet
+            failures.append(f"{fig['name']}: {fig['left_at_end']} cylinders in the pipe at "
                             f"{T_END} s")
     if cont["empty"] is not None and perf["empty"] is not None:
         print(f"delay of the continuous pipe: {cont['empty'] - perf['empty']:+.4f} s")
