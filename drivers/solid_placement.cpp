@@ -166,8 +166,9 @@ void check_density_ratio(double fluid_density, const std::vector<Outline>& solid
   for (const auto& s : solids)
     if (s.density < lightest * fluid_density) {
       std::ostringstream m;
-      m << s.what << ": density " << s.density << " kg/m^3 against fluid/density = "
-        << fluid_density << " kg/m^3: a solid lighter than " << lightest
+      m << s.what << ": density " << s.density
+        << " kg/m^3 against fluid/density = " << fluid_density << " kg/m^3: a solid lighter than "
+        << lightest
         << " of the fluid's density is more than the pressure system's round-off can carry "
            "(doc/parameters.md); check fluid/density and the solid's density";
       errors.push_back(m.str());
@@ -281,6 +282,48 @@ void check_obstacles_near_tank(const core::Box2& tank, const std::vector<Outline
   }
 }
 
+// An obstacle wholly outside the tank cuts no cell and has no effect: a misplaced coordinate (a
+// centre_x with the wrong sign, a tank shortened by an override). Touching a wall from outside
+// counts as outside.
+void check_obstacles_reach_tank(const core::Box2& tank, const std::vector<Outline>& obstacles,
+                                std::vector<std::string>& errors) {
+  for (std::size_t i = 0; i < obstacles.size();) {
+    const std::string& what = obstacles[i].what;
+    core::Box2 b = obstacles[i].box;
+    std::size_t j = i + 1;
+    for (; j < obstacles.size() && obstacles[j].what == what; ++j) {
+      b.lo.x = std::min(b.lo.x, obstacles[j].box.lo.x);
+      b.lo.z = std::min(b.lo.z, obstacles[j].box.lo.z);
+      b.hi.x = std::max(b.hi.x, obstacles[j].box.hi.x);
+      b.hi.z = std::max(b.hi.z, obstacles[j].box.hi.z);
+    }
+    i = j;
+    if (b.hi.x > tank.lo.x && b.lo.x < tank.hi.x && b.hi.z > tank.lo.z && b.lo.z < tank.hi.z)
+      continue;
+    errors.push_back(what + " spans x in [" + fmt(b.lo.x) + ", " + fmt(b.hi.x) + "], z in [" +
+                     fmt(b.lo.z) + ", " + fmt(b.hi.z) + "], wholly outside the tank x in [" +
+                     fmt(tank.lo.x) + ", " + fmt(tank.hi.x) + "], z in [" + fmt(tank.lo.z) + ", " +
+                     fmt(tank.hi.z) +
+                     "]: it would have no effect; check its coordinates (or grid/origin, "
+                     "grid/length, grid/height)");
+  }
+}
+
+// With water, a solid narrower than a cell in both directions can lie inside one cell and cut no
+// cell face: the pressure equation would not see it and it would fall as in a vacuum (a radius
+// typed in mm as m, or a grid far too coarse). Dry runs use the grid for nothing of the solids.
+void check_resolved(double h, const std::vector<Outline>& solids,
+                    std::vector<std::string>& errors) {
+  for (const auto& s : solids) {
+    if (s.size() >= h) continue;
+    errors.push_back(s.what + " spans " + fmt(s.size()) +
+                     " m, less than one cell (grid/cell_size = " + fmt(h) +
+                     " m): it can lie inside one cell and cut no cell face, so the water would not "
+                     "feel it; allowed: at least one cell across when the case has water (the "
+                     "paper resolves a cylinder with 20 cells)");
+  }
+}
+
 core::Box2 tank_of(const core::Params& params) {
   const auto o = params.reals("grid/origin");
   return {{o[0], o[1]}, {o[0] + params.real("grid/length"), o[1] + params.real("grid/height")}};
@@ -294,10 +337,13 @@ std::vector<std::string> check_solid_placement(const core::Params& params,
   const core::Box2 tank = tank_of(params);
   const auto obstacles = obstacle_outlines(params);
   check_obstacles_near_tank(tank, obstacles, errors);
+  if (errors.empty()) check_obstacles_reach_tank(tank, obstacles, errors);
   if (!errors.empty()) return errors;
   const auto solids = solid_outlines(params);
   check_in_tank(tank, solids, errors);
   check_density_ratio(params.real("fluid/density"), solids, errors);
+  if (!params.sublist_names("water").empty())
+    check_resolved(params.real("grid/cell_size"), solids, errors);
   box_pairs(solids, [&](std::size_t i, std::size_t j) {
     const double depth = overlap_depth(solids[i], solids[j]);
     if (depth > 1e-9 * std::max(solids[i].size(), solids[j].size()))

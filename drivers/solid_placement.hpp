@@ -1,7 +1,8 @@
 #pragma once
-// Where the case file puts its solids, checked before anything runs (doc/cases.md, "Checks
+// Where the case file puts its solids, checked before anything runs (doc/parameters.md, "Checks
 // before the run"): every solid inside the tank, no two solids overlapping, no solid overlapping
-// an obstacle, no obstacle far outside the tank. Contact is allowed: real boundaries at zero distance or more pass.
+// an obstacle, no obstacle far outside the tank or wholly outside it, and (with water) no solid
+// narrower than a cell. Contact is allowed: real boundaries at zero distance or more pass.
 #include <string>
 #include <vector>
 

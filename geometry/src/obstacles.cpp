@@ -117,6 +117,16 @@ std::vector<std::vector<Vec2>> fall_pipe_polygons(const FallPipe& p, const std::
   if (p.hole_size > 0.0 && !(p.hole_spacing > p.hole_size)) {
     fail("'hole_spacing' must exceed 'hole_size' when the walls are perforated");
   }
+  // Each hole splits both walls into one more polygon: a count beyond this is a mistyped size
+  // (e.g. a top of 1e30), and counting the holes one by one would not end (zc + spacing == zc).
+  constexpr double max_holes = 10000.0;
+  if (p.hole_size > 0.0 && (p.top - p.bottom) / p.hole_spacing > max_holes) {
+    std::ostringstream m;
+    m << "'top' - 'bottom' = " << p.top - p.bottom << " m with 'hole_spacing' = " << p.hole_spacing
+      << " m gives " << (p.top - p.bottom) / p.hole_spacing << " holes per wall; allowed: at most "
+      << max_holes << " (check the pipe's heights and the hole spacing)";
+    fail(m.str());
+  }
   const double a = 0.5 * p.inner_width, t = p.wall_thickness, cx = p.centre_x;
   auto rect = [](double x0, double x1, double z0, double z1) {
     return std::vector<Vec2>{{x0, z0}, {x1, z0}, {x1, z1}, {x0, z1}};

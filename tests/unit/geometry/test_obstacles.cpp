@@ -145,5 +145,16 @@ TEST(Obstacles, BadGeometryNamesTheKey) {
                      "    thickness: 0.1\n")
                 .find("sharper"),
             std::string::npos);
+  // A perforated pipe's hole count is bounded before the holes are laid out: with a top of 1e30
+  // the loop over the holes would not end (zc + spacing == zc).
+  const std::string holes = error_of(
+      "obstacles:\n  p:\n    type: fall_pipe\n    centre_x: 0.5\n    inner_width: 0.2\n"
+      "    wall_thickness: 0.01\n    bottom: 0.1\n    top: 1e30\n    hole_size: 0.001\n"
+      "    hole_spacing: 0.02\n");
+  EXPECT_NE(holes.find("holes per wall; allowed: at most 10000"), std::string::npos) << holes;
+  EXPECT_EQ(error_of("obstacles:\n  p:\n    type: fall_pipe\n    centre_x: 0.5\n"
+                     "    inner_width: 0.2\n    wall_thickness: 0.01\n    bottom: 0.0\n"
+                     "    top: 199.0\n    hole_size: 0.001\n    hole_spacing: 0.02\n"),
+            "");  // 9,950 holes: allowed
   EXPECT_EQ(error_of("obstacles: {}\n"), "");
 }
