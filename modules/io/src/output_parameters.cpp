@@ -44,6 +44,18 @@ void declare_output_parameters(core::ParamSchema& s) {
           "with min < max");
     // a probe outside the tank would record NaN (no fluid) all run long
     const double x0 = p.reals("grid/origin").at(0), x1 = x0 + p.real("grid/length");
+    // a count box that misses the tank would count 0 solids all run long
+    const double z0 = p.reals("grid/origin").at(1), z1 = z0 + p.real("grid/height");
+    if (count_box.size() == 4 && count_box[0] < count_box[1] && count_box[2] < count_box[3] &&
+        !(count_box[1] > x0 && count_box[0] < x1 && count_box[3] > z0 && count_box[2] < z1)) {
+      std::ostringstream m;
+      m << "key 'output/solid_count_box' = [" << count_box[0] << ", " << count_box[1] << ", "
+        << count_box[2] << ", " << count_box[3]
+        << "] is not allowed: the box lies outside the tank x in [" << x0 << ", " << x1
+        << "], z in [" << z0 << ", " << z1
+        << "] (grid/origin, grid/length, grid/height) and would count no solid";
+      errors.push_back(m.str());
+    }
     for (const double x : p.reals("output/level_probes"))
       if (!(x >= x0 && x <= x1)) {
         std::ostringstream m;
