@@ -1,6 +1,7 @@
 // The water at t = 0 (water.hpp).
 #include "picdem/particles/water.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 namespace picdem::particles {
@@ -12,6 +13,19 @@ void check_water(const core::Params& p, std::vector<std::string>& errors) {
   const auto o = p.reals("grid/origin");
   const double x0 = o[0], z0 = o[1];
   const double x1 = x0 + p.real("grid/length"), z1 = z0 + p.real("grid/height");
+  // Particles are seeded one spacing apart: a region thinner than that may hold none of them (a
+  // level typed in mm as m, a block of zero width), and the run would go on without that water.
+  const double spacing = p.real("grid/cell_size") /
+                         static_cast<double>(std::max(
+                             1LL, static_cast<long long>(p.integer("particles/per_cell_1d"))));
+  auto too_thin = [&](const std::string& name, const char* what, double size) {
+    std::ostringstream m;
+    m.precision(10);
+    m << "water/" << name << ": " << what << " " << size
+      << " m, less than one particle spacing (grid/cell_size / particles/per_cell_1d = " << spacing
+      << " m): it would seed no water; allowed: at least one spacing";
+    errors.push_back(m.str());
+  };
   for (const auto& name : p.sublist_names("water")) {
     const auto w = p.sub("water/" + name);
     std::ostringstream msg;
@@ -27,6 +41,8 @@ void check_water(const core::Params& p, std::vector<std::string>& errors) {
             << ", " << z[1] << "] reaches outside the tank x in [" << x0 << ", " << x1
             << "], z in [" << z0 << ", " << z1 << "]";
         errors.push_back(msg.str());
+      } else if (std::min(x[1] - x[0], z[1] - z[0]) < spacing) {
+        too_thin(name, "the block is", std::min(x[1] - x[0], z[1] - z[0]));
       }
     } else {
       const double z = w.real("z");
@@ -34,6 +50,8 @@ void check_water(const core::Params& p, std::vector<std::string>& errors) {
         msg << "key 'water/" << name << "/z' = " << z << " is not allowed: the level must lie in ("
             << z0 << ", " << z1 << "], inside the tank";
         errors.push_back(msg.str());
+      } else if (z - z0 < spacing) {
+        too_thin(name, "the water below the level is", z - z0);
       }
     }
   }
