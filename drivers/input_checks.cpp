@@ -144,7 +144,8 @@ the value and what is allowed, when:
   densities): the pressure system's fluid terms and that solid's would then differ by more than
   round-off carries (`cases/floating_disk`, 30 steps: a ratio of 5e-10 runs, 5e-12 stops with the
   pressure solve unconverged); no real solid is that light, a mistyped `fluid/density` is;
-- water regions reach outside the tank or are empty;
+- water regions reach outside the tank, are empty, or are thinner than one particle spacing
+  (`grid/cell_size` / `particles/per_cell_1d`: they would seed no particle);
 - `solver/Belos`, `solver/MueLu` (and the lists merged from `solver/MueLu_solids`,
   `solver/MueLu_one_level`), or the implicit viscous solve's `viscous_solver/Belos`,
   `viscous_solver/MueLu`, hold a key or a type that Trilinos' own validators reject, or a
