@@ -144,6 +144,9 @@ the value and what is allowed, when:
   densities): the pressure system's fluid terms and that solid's would then differ by more than
   round-off carries (`cases/floating_disk`, 30 steps: a ratio of 5e-10 runs, 5e-12 stops with the
   pressure solve unconverged); no real solid is that light, a mistyped `fluid/density` is;
+- `time/dt_max` lies below `time/dt_min`, or (with water and `time/cfl_speed: grid`) `time/cfl`
+  is so small that gravity's bound sqrt(cfl h / |g|) lies below `time/dt_min`: every step would
+  stop the run as blown up;
 - water regions reach outside the tank, are empty, or are thinner than one particle spacing
   (`grid/cell_size` / `particles/per_cell_1d`: they would seed no particle);
 - `solver/Belos`, `solver/MueLu` (and the lists merged from `solver/MueLu_solids`,

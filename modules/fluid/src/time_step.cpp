@@ -32,6 +32,31 @@ void declare_time_parameters(core::ParamSchema& s) {
       .at_least(1.0);
   s.real("time/dt_min", 1e-8, "smallest time step [s]; a step below it stops the run as blown up")
       .positive();
+  // Bounds that put every step below dt_min whatever the flow: the run would stop at its first
+  // step saying the flow has blown up, which would send the user to the wrong key.
+  s.check([](const core::Params& p, std::vector<std::string>& errors) {
+    const double dt_max = p.real("time/dt_max"), dt_min = p.real("time/dt_min");
+    std::ostringstream m;
+    if (dt_max < dt_min) {
+      m << "key 'time/dt_max' = " << dt_max
+        << " is not allowed: it is below time/dt_min = " << dt_min
+        << ", so every step would stop the run as blown up; allowed: dt_max >= dt_min";
+      errors.push_back(m.str());
+      return;
+    }
+    if (p.sublist_names("water").empty() || p.string("time/cfl_speed") != "grid") return;
+    const auto g = p.reals("fluid/gravity");
+    const double h = p.real("grid/cell_size"), cfl = p.real("time/cfl");
+    const double g_norm = std::hypot(g.at(0), g.at(1));
+    if (g_norm > 0.0 && std::sqrt(cfl * h / g_norm) < dt_min) {
+      m << "key 'time/cfl' = " << cfl << " is not allowed here: water accelerated by gravity "
+        << "takes steps of at most sqrt(cfl h / |g|) = " << std::sqrt(cfl * h / g_norm)
+        << " s (grid/cell_size = " << h << " m), below time/dt_min = " << dt_min
+        << " s, so the first step would stop the run as blown up; allowed: cfl >= "
+        << dt_min * dt_min * g_norm / h << " (or a smaller time/dt_min)";
+      errors.push_back(m.str());
+    }
+  });
 }
 
 TimeStepLimits time_step_limits_from(const core::Params& params) {
