@@ -346,8 +346,10 @@ void DemSolver::collision_forces(double dt_t, Stage& out, std::vector<Springs>* 
     };
     for (int side = 0; side < 4; ++side)
       if (wall_pair(s, side, kin)) against_fixed(wall_key(side));
-    for (std::size_t o = 0; o < obstacles_.size(); ++o)
+    for (int n = obs_start_[i]; n < obs_start_[i + 1]; ++n) {
+      const auto o = static_cast<std::size_t>(obs_[static_cast<std::size_t>(n)]);
       if (obstacle_pair(s, o, kin)) against_fixed(obstacle_key(o));
+    }
     for (int n = nbr_start_[i]; n < nbr_start_[i + 1]; ++n) {
       const int j = nbr_[static_cast<std::size_t>(n)];
       const SolidState& p = j < static_cast<int>(n_owned)

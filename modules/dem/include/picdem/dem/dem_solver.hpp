@@ -173,6 +173,10 @@ class DemSolver {
   // neighbour list of owned solids (CSR): partners are local indices (owned, then ghosts),
   // sorted by global id
   std::vector<int> nbr_start_, nbr_;
+  // obstacles within reach of each owned solid plus the skin (CSR, ascending obstacle index, the
+  // summation order): built with the neighbour list, so that a subcycle does not test every
+  // obstacle's box (a floor of 300 teeth made that 3/4 of a dry collapse's time)
+  std::vector<int> obs_start_, obs_;
   // world-frame boundary pieces of the pair being evaluated (scratch, no state)
   mutable std::vector<geometry::BoundaryPiece> scratch_a_, scratch_b_;
 };
