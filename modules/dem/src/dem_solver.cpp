@@ -184,6 +184,7 @@ void DemSolver::add_solids(const std::vector<SolidSpec>& solids) {
   law_ =
       (cfg_.contact_law ? cfg_.contact_law : linear_spring_dashpot(cfg_))->for_masses(m_min, m_max);
   dt_dem_ = law_->time_step(m_min, m_max);
+  mass_range_ = {m_min, m_max};
   sort_owned();
   rebuild();
 }
@@ -406,7 +407,9 @@ void DemSolver::advance(double dt, const std::vector<SolidLoads>& fluid_loads) {
     m << "DemSolver::advance: dt = " << dt << " s needs " << cycles
       << " subcycles of dt_DEM = " << dt_dem_ << " s, more than " << std::numeric_limits<int>::max()
       << "; lower time/dt_max (dt_DEM is eq. 18's step or, with a large dem/alpha, the damped "
-         "stability limit: doc/dem.md)";
+         "stability limit: doc/dem.md; it follows the solids' masses, here "
+      << mass_range_.first << " to " << mass_range_.second
+      << " kg per m: check the smallest solid's size and density)";
     throw core::SolverError(m.str());
   }
   const int K = std::max(1, static_cast<int>(cycles));
