@@ -285,10 +285,8 @@ bool DemSolver::obstacle_pair(const SolidState& a, std::size_t obstacle,
                               ContactKinematics& k) const {
   const ShapeInfo& sa = shapes_[static_cast<std::size_t>(a.shape)];
   const double reach = sa.radius + cfg_.gap();
-  const core::Box2& box = obstacle_boxes_[obstacle];
-  if (a.x.x + reach < box.lo.x || a.x.x - reach > box.hi.x || a.x.z + reach < box.lo.z ||
-      a.x.z - reach > box.hi.z)
-    return false;
+  const core::Box2 around{{a.x.x - reach, a.x.z - reach}, {a.x.x + reach, a.x.z + reach}};
+  if (!obstacle_boxes_[obstacle].overlaps(around)) return false;
   const auto wa = to_world(sa.body, pose_of(a));
   const ClosestPoints cp = closest_points(wa, obstacles_[obstacle]);
   const double delta = cfg_.gap() - cp.distance;

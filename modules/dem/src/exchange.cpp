@@ -302,18 +302,12 @@ void DemSolver::build_neighbours() {
   // Obstacles: a solid moves less than half the skin between rebuilds (maybe_rebuild), so an
   // obstacle whose box lies farther than radius + gap + skin cannot come within contact reach
   // before the next rebuild (obstacle_pair's own test is radius + gap).
-  obs_start_.assign(n_owned + 1, 0);
-  obs_.clear();
   for (std::size_t i = 0; i < n_owned; ++i) {
     const SolidState& s = owned_[i];
     const double reach = shapes_[static_cast<std::size_t>(s.shape)].radius + extra;
-    for (std::size_t o = 0; o < obstacle_boxes_.size(); ++o) {
-      const core::Box2& box = obstacle_boxes_[o];
-      if (s.x.x + reach < box.lo.x || s.x.x - reach > box.hi.x || s.x.z + reach < box.lo.z ||
-          s.x.z - reach > box.hi.z)
-        continue;
-      obs_.push_back(static_cast<int>(o));
-    }
+    const core::Box2 around{{s.x.x - reach, s.x.z - reach}, {s.x.x + reach, s.x.z + reach}};
+    for (std::size_t o = 0; o < obstacle_boxes_.size(); ++o)
+      if (obstacle_boxes_[o].overlaps(around)) obs_.push_back(static_cast<int>(o));
     obs_start_[i + 1] = static_cast<int>(obs_.size());
   }
 }

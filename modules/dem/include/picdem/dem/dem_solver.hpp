@@ -160,8 +160,8 @@ class DemSolver {
   bool own_friction_ = false;  // some solid sets its own friction: pairs take pair_friction()
   ContactLawPtr law_;          // cfg_.contact_law, or the paper's law built from cfg_
   double max_radius_ = 0.0, skin_ = 0.0, dt_dem_ = 0.0;
-  std::pair<double, double> mass_range_{0.0,
-                                        0.0};  // lightest and heaviest solid [kg/m], for messages
+  // lightest and heaviest solid [kg/m], for the messages that name what sets dt_DEM
+  std::pair<double, double> mass_range_{0.0, 0.0};
   int last_subcycles_ = 0;
   long long rebuilds_ = 0;
 
