@@ -318,6 +318,8 @@ void DemSolver::collision_forces(double dt_t, Stage& out, std::vector<Springs>* 
   if (new_springs) new_springs->assign(n_owned, Springs{});
   const bool accumulated = cfg_.tangential == TangentialModel::Accumulated;
   const BodyMotion fixed{};
+  pair_slot_.resize(nbr_.size());
+  pair_hits_.clear();
   const ContactLaw& law = *law_;
   for (std::size_t i = 0; i < n_owned; ++i) {
     const SolidState& s = owned_[i];
@@ -350,20 +352,35 @@ void DemSolver::collision_forces(double dt_t, Stage& out, std::vector<Springs>* 
       if (obstacle_pair(s, o, kin)) against_fixed(obstacle_key(o));
     }
     for (int n = nbr_start_[i]; n < nbr_start_[i + 1]; ++n) {
-      const int j = nbr_[static_cast<std::size_t>(n)];
+      const auto e = static_cast<std::size_t>(n);
+      const int j = nbr_[e];
       const SolidState& p = j < static_cast<int>(n_owned)
                                 ? owned_[static_cast<std::size_t>(j)]
                                 : ghosts_[static_cast<std::size_t>(j) - n_owned];
       // the pair is always evaluated with the lower id as body a: both owners get the same bits
       const bool i_is_a = s.id < p.id;
-      const SolidState& a = i_is_a ? s : p;
-      const SolidState& b = i_is_a ? p : s;
-      if (!solid_pair(a, b, kin)) continue;
-      auto coef = law.coefficients(a.mass, b.mass);
-      if (own_friction_) coef.mu = pair_friction(friction_of(a.id), friction_of(b.id));
-      const auto cf = law.force(coef, kin, motion_of(a), motion_of(b),
-                                accumulated ? spring_of(springs_[i], p.id) : 0.0, dt_t);
-      add(kin, i_is_a ? kin.arm_a : kin.arm_b, i_is_a ? cf.force : -cf.force,
+      const PairHit* hit = nullptr;
+      if (mirror_[e] >= 0) {
+        // evaluated at j's entry for i (j < i): the same bits as evaluating it again here
+        const int slot = pair_slot_[static_cast<std::size_t>(mirror_[e])];
+        if (slot >= 0) hit = &pair_hits_[static_cast<std::size_t>(slot)];
+      } else {
+        pair_slot_[e] = -1;
+        const SolidState& a = i_is_a ? s : p;
+        const SolidState& b = i_is_a ? p : s;
+        if (solid_pair(a, b, kin)) {
+          auto coef = law.coefficients(a.mass, b.mass);
+          if (own_friction_) coef.mu = pair_friction(friction_of(a.id), friction_of(b.id));
+          const auto cf = law.force(coef, kin, motion_of(a), motion_of(b),
+                                    accumulated ? spring_of(springs_[i], p.id) : 0.0, dt_t);
+          pair_slot_[e] = static_cast<int>(pair_hits_.size());
+          pair_hits_.push_back({kin, cf});
+          hit = &pair_hits_.back();
+        }
+      }
+      if (!hit) continue;
+      const ContactForce& cf = hit->cf;
+      add(hit->kin, i_is_a ? hit->kin.arm_a : hit->kin.arm_b, i_is_a ? cf.force : -cf.force,
           i_is_a ? cf.torque : -cf.torque, p.id, cf.spring, p.id, i_is_a);
     }
     out.force[i] = F;

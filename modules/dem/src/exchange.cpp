@@ -271,6 +271,7 @@ void DemSolver::build_neighbours() {
   };
   nbr_start_.assign(n_owned + 1, 0);
   nbr_.clear();
+  mirror_.clear();
   obs_start_.assign(n_owned + 1, 0);
   obs_.clear();
   if (n_all == 0) return;
@@ -299,6 +300,24 @@ void DemSolver::build_neighbours() {
     for (const auto& c : cand) nbr_.push_back(c.second);
     nbr_start_[i + 1] = static_cast<int>(nbr_.size());
   }
+  // Each owned pair is evaluated once, at the entry of its lower local index; the other entry
+  // reads that result (collision_forces). The reach above is symmetric, so j's list holds i
+  // whenever i's holds j; a missing mirror would only mean evaluating the pair twice.
+  mirror_.assign(nbr_.size(), -1);
+  for (std::size_t i = 0; i < n_owned; ++i)
+    for (int n = nbr_start_[i]; n < nbr_start_[i + 1]; ++n) {
+      const int j = nbr_[static_cast<std::size_t>(n)];
+      if (j >= static_cast<int>(i)) continue;  // a ghost (j >= n_owned) or evaluated here
+      // j's list is sorted by global id: find i's entry in it
+      const std::int64_t id = owned_[i].id;
+      const auto first = nbr_.begin() + nbr_start_[static_cast<std::size_t>(j)];
+      const auto last = nbr_.begin() + nbr_start_[static_cast<std::size_t>(j) + 1];
+      const auto it = std::lower_bound(first, last, id, [&](int q, std::int64_t v) {
+        return at(static_cast<std::size_t>(q)).id < v;
+      });
+      if (it != last && *it == static_cast<int>(i))
+        mirror_[static_cast<std::size_t>(n)] = static_cast<int>(it - nbr_.begin());
+    }
   // Obstacles: a solid moves less than half the skin between rebuilds (maybe_rebuild), so an
   // obstacle whose box lies farther than radius + gap + skin cannot come within contact reach
   // before the next rebuild (obstacle_pair's own test is radius + gap).

@@ -176,6 +176,19 @@ class DemSolver {
   // neighbour list of owned solids (CSR): partners are local indices (owned, then ghosts),
   // sorted by global id
   std::vector<int> nbr_start_, nbr_;
+  // half evaluation of the owned pairs: for an entry of solid i whose partner j is owned with
+  // j < i, the index of j's entry for i (whose pair was evaluated first, with the same bits as
+  // here, since a pair is always evaluated with the lower id as body a); -1 where the pair is
+  // evaluated at this entry (j > i, or a ghost)
+  std::vector<int> mirror_;
+  // results of the pairs evaluated in one collision_forces call (scratch, no state): per entry
+  // the index into pair_hits_ of its contact, or -1 without contact
+  struct PairHit {
+    ContactKinematics kin;
+    ContactForce cf;
+  };
+  mutable std::vector<int> pair_slot_;
+  mutable std::vector<PairHit> pair_hits_;
   // obstacles within reach of each owned solid plus the skin (CSR, ascending obstacle index, the
   // summation order): built with the neighbour list, so that a subcycle does not test every
   // obstacle's box (a floor of 300 teeth made that 3/4 of a dry collapse's time)
