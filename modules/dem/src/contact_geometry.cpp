@@ -34,6 +34,24 @@ Vec2 arc_point(const Arc& a, double phi) {
   return a.centre + a.radius * Vec2{std::cos(phi), std::sin(phi)};
 }
 
+/// An arc's end points, computed once for all the tests of a pair of pieces (each costs a sine
+/// and a cosine; the same expressions as arc_point, so the same bits).
+struct ArcEnds {
+  Vec2 p0, p1;
+};
+ArcEnds ends_of(const Arc& a) {
+  return {arc_point(a, a.phi0), arc_point(a, a.phi1)};
+}
+
+/// closest_on_arc with the arc's end points given.
+Vec2 closest_on_arc(const Arc& a, const ArcEnds& e, const Vec2& p) {
+  const Vec2 d = p - a.centre;
+  const double r = length(d);
+  if (r > 0.0 && in_arc(a, d)) return a.centre + (a.radius / r) * d;
+  if (r == 0.0) return e.p0;
+  return core::norm2(p - e.p0) <= core::norm2(p - e.p1) ? e.p0 : e.p1;
+}
+
 ClosestPoints make(const Vec2& p, const Vec2& q) {
   ClosestPoints c;
   c.on_a = p;
@@ -148,21 +166,21 @@ bool arcs_cross(const Arc& a, const Arc& b, Vec2& where) {
   return false;
 }
 
-ClosestPoints segment_arc(const Segment& s, const Arc& a) {
+ClosestPoints segment_arc(const Segment& s, const Arc& a, const ArcEnds& e) {
   Vec2 x;
   if (segment_crosses_arc(s, a, x)) return make(x, x);
   // Interior critical point: the connecting line is normal to the segment and radial to the arc,
   // so it passes through the arc centre.
   const Vec2 foot = closest_on_segment(s, a.centre);
-  ClosestPoints best = make(foot, closest_on_arc(a, foot));
-  keep_min(best, make(s.a, closest_on_arc(a, s.a)));
-  keep_min(best, make(s.b, closest_on_arc(a, s.b)));
-  keep_min(best, make(closest_on_segment(s, arc_point(a, a.phi0)), arc_point(a, a.phi0)));
-  keep_min(best, make(closest_on_segment(s, arc_point(a, a.phi1)), arc_point(a, a.phi1)));
+  ClosestPoints best = make(foot, closest_on_arc(a, e, foot));
+  keep_min(best, make(s.a, closest_on_arc(a, e, s.a)));
+  keep_min(best, make(s.b, closest_on_arc(a, e, s.b)));
+  keep_min(best, make(closest_on_segment(s, e.p0), e.p0));
+  keep_min(best, make(closest_on_segment(s, e.p1), e.p1));
   return best;
 }
 
-ClosestPoints arc_arc(const Arc& a, const Arc& b) {
+ClosestPoints arc_arc(const Arc& a, const ArcEnds& ea, const Arc& b, const ArcEnds& eb) {
   Vec2 x;
   if (arcs_cross(a, b, x)) return make(x, x);
   const Vec2 c = b.centre - a.centre;
@@ -179,14 +197,8 @@ ClosestPoints arc_arc(const Arc& a, const Arc& b) {
           keep_min(best, make(a.centre + a.radius * da, b.centre + b.radius * db));
       }
   }
-  for (double phi : {a.phi0, a.phi1}) {
-    const Vec2 p = arc_point(a, phi);
-    keep_min(best, make(p, closest_on_arc(b, p)));
-  }
-  for (double phi : {b.phi0, b.phi1}) {
-    const Vec2 q = arc_point(b, phi);
-    keep_min(best, make(closest_on_arc(a, q), q));
-  }
+  for (const Vec2& p : {ea.p0, ea.p1}) keep_min(best, make(p, closest_on_arc(b, eb, p)));
+  for (const Vec2& q : {eb.p0, eb.p1}) keep_min(best, make(closest_on_arc(a, ea, q), q));
   return best;
 }
 
@@ -220,6 +232,11 @@ void to_world_near(const std::vector<BoundaryPiece>& body, const geometry::Pose&
     } else {
       const auto& a = std::get<Arc>(piece);
       const Arc w{place(a.centre), a.radius, a.phi0 + pose.theta, a.phi1 + pose.theta};
+      // the distance to the arc's whole circle is a lower bound of the distance to the arc: far
+      // from the circle the arc is out of reach (with a margin for round-off, so that the test
+      // below keeps deciding every piece near the reach)
+      const double off = std::abs(length(w.centre - centre) - w.radius);
+      if (off > reach * (1.0 + 1e-9) + 1e-12 * w.radius) continue;
       if (core::norm2(closest_on_arc(w, centre) - centre) < reach2) out.emplace_back(w);
     }
   }
@@ -242,21 +259,41 @@ Vec2 closest_on_arc(const Arc& a, const Vec2& p) {
   return core::norm2(p - p0) <= core::norm2(p - p1) ? p0 : p1;
 }
 
-ClosestPoints closest_points(const BoundaryPiece& a, const BoundaryPiece& b) {
+namespace {
+/// closest_points of two pieces, an arc's end points given (unused for a segment).
+ClosestPoints closest_pieces(const BoundaryPiece& a, const ArcEnds& ea, const BoundaryPiece& b,
+                             const ArcEnds& eb) {
   const auto* sa = std::get_if<Segment>(&a);
   const auto* sb = std::get_if<Segment>(&b);
   if (sa && sb) return segment_segment(*sa, *sb);
-  if (sa) return segment_arc(*sa, std::get<Arc>(b));
-  if (sb) return swap_sides(segment_arc(*sb, std::get<Arc>(a)));
-  return arc_arc(std::get<Arc>(a), std::get<Arc>(b));
+  if (sa) return segment_arc(*sa, std::get<Arc>(b), eb);
+  if (sb) return swap_sides(segment_arc(*sb, std::get<Arc>(a), ea));
+  return arc_arc(std::get<Arc>(a), ea, std::get<Arc>(b), eb);
+}
+
+ArcEnds ends_of(const BoundaryPiece& piece) {
+  const auto* a = std::get_if<Arc>(&piece);
+  return a ? ends_of(*a) : ArcEnds{};
+}
+}  // namespace
+
+ClosestPoints closest_points(const BoundaryPiece& a, const BoundaryPiece& b) {
+  return closest_pieces(a, ends_of(a), b, ends_of(b));
 }
 
 ClosestPoints closest_points(const std::vector<BoundaryPiece>& a,
                              const std::vector<BoundaryPiece>& b) {
   ClosestPoints best;
   best.distance = std::numeric_limits<double>::infinity();
-  for (const auto& pa : a)
-    for (const auto& pb : b) keep_min_prefer_face(best, closest_points(pa, pb));
+  // the arcs' end points once per piece, not once per pair of pieces
+  thread_local std::vector<ArcEnds> ends_b;
+  ends_b.clear();
+  for (const auto& pb : b) ends_b.push_back(ends_of(pb));
+  for (const auto& pa : a) {
+    const ArcEnds ea = ends_of(pa);
+    for (std::size_t k = 0; k < b.size(); ++k)
+      keep_min_prefer_face(best, closest_pieces(pa, ea, b[k], ends_b[k]));
+  }
   return best;
 }
 
