@@ -51,6 +51,24 @@ inline DemSolver solver(const DemConfig& cfg, double L, double H,
   return DemSolver(self(), cfg, {tank}, tank, std::move(obstacles));
 }
 
+/// A configuration with cell size h and no gravity.
+inline DemConfig weightless(double h) {
+  DemConfig c;
+  c.h = h;
+  c.gravity = {0.0, 0.0};
+  return c;
+}
+
+/// Collision loads of these solids (ordered by id) in a 1 m x 1 m tank, evaluated once with the
+/// fluid step dt.
+inline std::vector<core::SolidLoads> collision_loads(const DemConfig& cfg,
+                                                     const std::vector<SolidSpec>& solids,
+                                                     double dt = 1e-4) {
+  DemSolver s = solver(cfg, 1.0, 1.0);
+  s.add_solids(solids);
+  return s.predicted_collision_loads(dt);
+}
+
 inline double kinetic_energy(const std::vector<core::SolidState>& s) {
   double e = 0.0;
   for (const auto& b : s)
