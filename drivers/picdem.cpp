@@ -125,6 +125,29 @@ void log_solids(const picdem::core::Comm& comm, const picdem::coupling::Simulati
   picdem::core::log(comm, text);
 }
 
+// The viscosity the transfer's PIC share adds (doc/particles.md, "The PIC share as a viscosity"):
+// each step hands a particle (1 - r) of the grid's interpolated velocity, a smoothing by the tent
+// of variance h^2 / 6, i.e. about (1 - r) h^2 / (6 dt); stated at time/dt_max, its smallest value,
+// beside fluid/viscosity, so that a run whose result is the viscous stress sees when it is not
+// small. Nothing for pure FLIP, APIC or a dry run.
+void log_transfer_viscosity(const picdem::core::Comm& comm, const picdem::coupling::Simulation& sim,
+                            const picdem::core::Params& params) {
+  if (!sim.has_fluid() || params.string("transfer/scheme") != "flip") return;
+  const double r = params.real("transfer/flip_ratio");
+  if (r >= 1.0) return;
+  const double h = params.real("grid/cell_size"), dt = params.real("time/dt_max");
+  const double nu_pic = (1.0 - r) * h * h / (6.0 * dt), nu = params.real("fluid/viscosity");
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "picdem: transfer/flip_ratio = %.4g: the PIC share smooths like a viscosity of "
+                "about %.3g m^2/s at time/dt_max (more at shorter steps), against fluid/viscosity "
+                "= %.3g m^2/s",
+                r, nu_pic, nu);
+  std::string line = text;
+  if (nu > 0.0) line += " (" + std::to_string(std::lround(100.0 * nu_pic / nu)) + "% of it)";
+  picdem::core::log(comm, line + "; doc/particles.md");
+}
+
 // Runs the case (after the parameters are read); the log and run.yaml from the moment the output
 // folder is known.
 int run_case(const picdem::core::Comm& comm, const Args& args, const picdem::core::Params& params,
@@ -144,6 +167,7 @@ int run_case(const picdem::core::Comm& comm, const Args& args, const picdem::cor
     run.sim = std::make_unique<picdem::coupling::Simulation>(comm, params);
   }
   log_solids(comm, *run.sim, params);
+  log_transfer_viscosity(comm, *run.sim, params);
   run.steps = std::make_unique<picdem::run::Run>(*run.sim);
   if (from.empty())
     run.steps->open_output(out);
