@@ -34,20 +34,40 @@ Vec2 arc_point(const Arc& a, double phi) {
   return a.centre + a.radius * Vec2{std::cos(phi), std::sin(phi)};
 }
 
-/// An arc's end points, computed once for all the tests of a pair of pieces (each costs a sine
-/// and a cosine; the same expressions as arc_point, so the same bits).
+/// An arc's end directions and points, computed once for all the tests of a pair of pieces (each
+/// end costs a sine and a cosine; the points are the same expressions as arc_point).
 struct ArcEnds {
-  Vec2 p0, p1;
+  Vec2 u0, u1;        ///< unit directions from the centre to the start and the end
+  Vec2 p0, p1;        ///< the end points
+  bool wide = false;  ///< the span exceeds pi
+  bool full = false;  ///< the span is the whole circle
 };
 ArcEnds ends_of(const Arc& a) {
-  return {arc_point(a, a.phi0), arc_point(a, a.phi1)};
+  ArcEnds e;
+  e.u0 = Vec2{std::cos(a.phi0), std::sin(a.phi0)};
+  e.u1 = Vec2{std::cos(a.phi1), std::sin(a.phi1)};
+  e.p0 = a.centre + a.radius * e.u0;
+  e.p1 = a.centre + a.radius * e.u1;
+  const double span = a.phi1 - a.phi0;
+  e.wide = span > 0.5 * two_pi;
+  e.full = span >= two_pi - 1e-12;
+  return e;
+}
+
+/// in_arc by the signs of two cross products instead of an angle (atan2 and fmod): d lies on the
+/// span when it is counter-clockwise of the start and clockwise of the end (a span up to pi), or
+/// either (a wider span, the complement of a span below pi). The ends are included, as in in_arc.
+bool in_arc(const ArcEnds& e, const Vec2& d) {
+  if (e.full) return true;
+  const double c0 = core::cross(e.u0, d), c1 = core::cross(d, e.u1);
+  return e.wide ? (c0 >= 0.0 || c1 >= 0.0) : (c0 >= 0.0 && c1 >= 0.0);
 }
 
 /// closest_on_arc with the arc's end points given.
 Vec2 closest_on_arc(const Arc& a, const ArcEnds& e, const Vec2& p) {
   const Vec2 d = p - a.centre;
   const double r = length(d);
-  if (r > 0.0 && in_arc(a, d)) return a.centre + (a.radius / r) * d;
+  if (r > 0.0 && in_arc(e, d)) return a.centre + (a.radius / r) * d;
   if (r == 0.0) return e.p0;
   return core::norm2(p - e.p0) <= core::norm2(p - e.p1) ? e.p0 : e.p1;
 }
@@ -130,7 +150,7 @@ ClosestPoints segment_segment(const Segment& s, const Segment& t) {
 
 // The first point (along s) where segment s crosses arc a: |s.a + t r - c| = R for t in [0, 1],
 // on the arc's span.
-bool segment_crosses_arc(const Segment& s, const Arc& a, Vec2& where) {
+bool segment_crosses_arc(const Segment& s, const Arc& a, const ArcEnds& e, Vec2& where) {
   const Vec2 r = s.b - s.a, f = s.a - a.centre;
   const double A = core::norm2(r), B = core::dot(r, f), C = core::norm2(f) - a.radius * a.radius;
   const double disc = B * B - A * C;
@@ -139,7 +159,7 @@ bool segment_crosses_arc(const Segment& s, const Arc& a, Vec2& where) {
   for (double t : {(-B - root) / A, (-B + root) / A}) {
     if (t < 0.0 || t > 1.0) continue;
     const Vec2 x = s.a + t * r;
-    if (in_arc(a, x - a.centre)) {
+    if (in_arc(e, x - a.centre)) {
       where = x;
       return true;
     }
@@ -148,7 +168,7 @@ bool segment_crosses_arc(const Segment& s, const Arc& a, Vec2& where) {
 }
 
 // A point where arcs a and b cross: the intersections of their circles, on both spans.
-bool arcs_cross(const Arc& a, const Arc& b, Vec2& where) {
+bool arcs_cross(const Arc& a, const ArcEnds& ea, const Arc& b, const ArcEnds& eb, Vec2& where) {
   const Vec2 c = b.centre - a.centre;
   const double d = length(c);
   if (!(d > 0.0) || d > a.radius + b.radius || d < std::abs(a.radius - b.radius)) return false;
@@ -158,7 +178,7 @@ bool arcs_cross(const Arc& a, const Arc& b, Vec2& where) {
   const Vec2 u = c / d;
   for (double side : {1.0, -1.0}) {
     const Vec2 x = a.centre + along * u + side * h * core::perp(u);
-    if (in_arc(a, x - a.centre) && in_arc(b, x - b.centre)) {
+    if (in_arc(ea, x - a.centre) && in_arc(eb, x - b.centre)) {
       where = x;
       return true;
     }
@@ -168,7 +188,7 @@ bool arcs_cross(const Arc& a, const Arc& b, Vec2& where) {
 
 ClosestPoints segment_arc(const Segment& s, const Arc& a, const ArcEnds& e) {
   Vec2 x;
-  if (segment_crosses_arc(s, a, x)) return make(x, x);
+  if (segment_crosses_arc(s, a, e, x)) return make(x, x);
   // Interior critical point: the connecting line is normal to the segment and radial to the arc,
   // so it passes through the arc centre.
   const Vec2 foot = closest_on_segment(s, a.centre);
@@ -182,7 +202,7 @@ ClosestPoints segment_arc(const Segment& s, const Arc& a, const ArcEnds& e) {
 
 ClosestPoints arc_arc(const Arc& a, const ArcEnds& ea, const Arc& b, const ArcEnds& eb) {
   Vec2 x;
-  if (arcs_cross(a, b, x)) return make(x, x);
+  if (arcs_cross(a, ea, b, eb, x)) return make(x, x);
   const Vec2 c = b.centre - a.centre;
   const double d = length(c);
   ClosestPoints best;
@@ -193,7 +213,7 @@ ClosestPoints arc_arc(const Arc& a, const ArcEnds& ea, const Arc& b, const ArcEn
     for (double sa : {1.0, -1.0})
       for (double sb : {-1.0, 1.0}) {
         const Vec2 da = sa * u, db = sb * u;
-        if (in_arc(a, da) && in_arc(b, db))
+        if (in_arc(ea, da) && in_arc(eb, db))
           keep_min(best, make(a.centre + a.radius * da, b.centre + b.radius * db));
       }
   }
@@ -324,9 +344,10 @@ Vec2 support_point(const std::vector<BoundaryPiece>& boundary, const Vec2& d) {
       consider(s->b);
     } else {
       const auto& a = std::get<Arc>(piece);
-      if (in_arc(a, d)) consider(a.centre + a.radius * d);
-      consider(arc_point(a, a.phi0));
-      consider(arc_point(a, a.phi1));
+      const ArcEnds e = ends_of(a);
+      if (in_arc(e, d)) consider(a.centre + a.radius * d);
+      consider(e.p0);
+      consider(e.p1);
     }
   }
   return best;

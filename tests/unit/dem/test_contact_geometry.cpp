@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "picdem/dem/contact_geometry.hpp"
 #include "picdem/geometry/circle.hpp"
@@ -111,4 +112,42 @@ TEST(ContactGeometry, SupportPointAndCircleFastPath) {
   const core::Vec2 low = support_point(w, {0.0, -1.0});
   EXPECT_NEAR(low.x, 2.0, 1e-14);
   EXPECT_NEAR(low.z, 2.0 - std::sqrt(0.5), 1e-14);
+}
+
+// The arcs' span test (cross products against the end directions) on spans below, at and above pi
+// and the whole circle, with start angles off [-pi, pi] as a rotated body gives: the distance from
+// a point to the arc against the nearest of 20,001 points along it.
+TEST(ContactGeometry, ArcSpanTestAgreesWithSamplingOnEverySpan) {
+  const double spans[] = {0.3, 1.0, pi - 0.01, pi, pi + 0.01, 4.0, 2 * pi - 0.1, 2 * pi};
+  const double starts[] = {-7.0, -2.5, 0.0, 1.3, 5.9, 11.0};
+  const core::Vec2 centre{0.2, -0.1};
+  const double radius = 0.7;
+  unsigned state = 12345u;
+  auto uniform = [&state]() {
+    state = state * 1664525u + 1013904223u;
+    return (state >> 8) * (1.0 / 16777216.0);
+  };
+  int checked = 0;
+  for (double span : spans)
+    for (double phi0 : starts) {
+      const Arc arc{centre, radius, phi0, phi0 + span};
+      for (int k = 0; k < 40; ++k) {
+        const core::Vec2 p{centre.x + 3.0 * (uniform() - 0.5), centre.z + 3.0 * (uniform() - 0.5)};
+        const double off = std::abs(std::sqrt(core::norm2(p - centre)) - radius);
+        if (off < 0.05) continue;  // sampling resolves the distance to 1e-6 only away from the arc
+        double sampled = std::numeric_limits<double>::infinity();
+        const int n = 20000;
+        for (int i = 0; i <= n; ++i) {
+          const double phi = phi0 + span * i / n;
+          const core::Vec2 q = centre + radius * core::Vec2{std::cos(phi), std::sin(phi)};
+          sampled = std::min(sampled, std::sqrt(core::norm2(q - p)));
+        }
+        const ClosestPoints cp = closest_points(Segment{p, p}, arc);
+        ASSERT_NEAR(cp.distance, sampled, 1e-6) << "span " << span << " phi0 " << phi0;
+        const core::Vec2 on = closest_on_arc(arc, p);
+        ASSERT_NEAR(std::sqrt(core::norm2(on - p)), sampled, 1e-6);
+        ++checked;
+      }
+    }
+  EXPECT_GT(checked, 1000);
 }
