@@ -34,14 +34,7 @@ Vec2 arc_point(const Arc& a, double phi) {
   return a.centre + a.radius * Vec2{std::cos(phi), std::sin(phi)};
 }
 
-/// An arc's end directions and points, computed once for all the tests of a pair of pieces (each
-/// end costs a sine and a cosine; the points are the same expressions as arc_point).
-struct ArcEnds {
-  Vec2 u0, u1;        ///< unit directions from the centre to the start and the end
-  Vec2 p0, p1;        ///< the end points
-  bool wide = false;  ///< the span exceeds pi
-  bool full = false;  ///< the span is the whole circle
-};
+/// An arc's end data from its angles (the points are the same expressions as arc_point).
 ArcEnds ends_of(const Arc& a) {
   ArcEnds e;
   e.u0 = Vec2{std::cos(a.phi0), std::sin(a.phi0)};
@@ -51,6 +44,17 @@ ArcEnds ends_of(const Arc& a) {
   const double span = a.phi1 - a.phi0;
   e.wide = span > 0.5 * two_pi;
   e.full = span >= two_pi - 1e-12;
+  return e;
+}
+
+/// The end data of arc `w` (world frame) from its body-frame end data `b`, the rotation given by
+/// its cosine and sine: the directions rotated, the points from the placed centre.
+ArcEnds placed_ends(const Arc& w, const ArcEnds& b, double c, double s) {
+  ArcEnds e = b;
+  e.u0 = Vec2{c * b.u0.x - s * b.u0.z, s * b.u0.x + c * b.u0.z};
+  e.u1 = Vec2{c * b.u1.x - s * b.u1.z, s * b.u1.x + c * b.u1.z};
+  e.p0 = w.centre + w.radius * e.u0;
+  e.p1 = w.centre + w.radius * e.u1;
   return e;
 }
 
@@ -240,26 +244,74 @@ std::vector<BoundaryPiece> to_world(const std::vector<BoundaryPiece>& body,
   return world;
 }
 
-void to_world_near(const std::vector<BoundaryPiece>& body, const geometry::Pose& pose,
-                   const Vec2& centre, double reach, std::vector<BoundaryPiece>& out) {
+Boundary with_ends(std::vector<BoundaryPiece> pieces) {
+  Boundary b;
+  b.ends.reserve(pieces.size());
+  for (const auto& piece : pieces) {
+    const auto* a = std::get_if<Arc>(&piece);
+    b.ends.push_back(a ? ends_of(*a) : ArcEnds{});
+  }
+  b.pieces = std::move(pieces);
+  return b;
+}
+
+namespace {
+/// Places `body` by `pose` into `out`, keeping the pieces for which `keep(piece, ends)` holds
+/// (one sine and cosine per call, none per piece).
+template <class Keep>
+void place(const Boundary& body, const geometry::Pose& pose, Boundary& out, Keep keep) {
   const double c = std::cos(pose.theta), s = std::sin(pose.theta);
-  auto place = [&](const Vec2& b) { return pose.x + Vec2{c * b.x - s * b.z, s * b.x + c * b.z}; };
-  const double reach2 = reach * reach;
-  for (const auto& piece : body) {
+  auto at = [&](const Vec2& b) { return pose.x + Vec2{c * b.x - s * b.z, s * b.x + c * b.z}; };
+  for (std::size_t k = 0; k < body.pieces.size(); ++k) {
+    const auto& piece = body.pieces[k];
     if (const auto* seg = std::get_if<Segment>(&piece)) {
-      const Segment w{place(seg->a), place(seg->b)};
-      if (core::norm2(closest_on_segment(w, centre) - centre) < reach2) out.emplace_back(w);
+      const Segment w{at(seg->a), at(seg->b)};
+      if (!keep(w)) continue;
+      out.pieces.emplace_back(w);
+      out.ends.emplace_back();
     } else {
       const auto& a = std::get<Arc>(piece);
-      const Arc w{place(a.centre), a.radius, a.phi0 + pose.theta, a.phi1 + pose.theta};
-      // the distance to the arc's whole circle is a lower bound of the distance to the arc: far
-      // from the circle the arc is out of reach (with a margin for round-off, so that the test
-      // below keeps deciding every piece near the reach)
-      const double off = std::abs(length(w.centre - centre) - w.radius);
-      if (off > reach * (1.0 + 1e-9) + 1e-12 * w.radius) continue;
-      if (core::norm2(closest_on_arc(w, centre) - centre) < reach2) out.emplace_back(w);
+      const Arc w{at(a.centre), a.radius, a.phi0 + pose.theta, a.phi1 + pose.theta};
+      const ArcEnds e = placed_ends(w, body.ends[k], c, s);
+      if (!keep(w, e)) continue;
+      out.pieces.emplace_back(w);
+      out.ends.push_back(e);
     }
   }
+}
+}  // namespace
+
+void to_world(const Boundary& body, const geometry::Pose& pose, Boundary& out) {
+  out.clear();
+  place(body, pose, out, [](const auto&...) { return true; });
+}
+
+void to_world_near(const Boundary& body, const geometry::Pose& pose, const Vec2& centre,
+                   double reach, Boundary& out) {
+  const double reach2 = reach * reach;
+  struct Near {
+    const Vec2& centre;
+    double reach, reach2;
+    bool operator()(const Segment& w) const {
+      return core::norm2(closest_on_segment(w, centre) - centre) < reach2;
+    }
+    bool operator()(const Arc& w, const ArcEnds& e) const {
+      // the distance to the arc's whole circle is a lower bound of the distance to the arc: far
+      // from the circle the arc is out of reach (with a margin for round-off, so that the exact
+      // test keeps deciding every piece near the reach)
+      const double off = std::abs(length(w.centre - centre) - w.radius);
+      if (off > reach * (1.0 + 1e-9) + 1e-12 * w.radius) return false;
+      return core::norm2(closest_on_arc(w, e, centre) - centre) < reach2;
+    }
+  };
+  place(body, pose, out, Near{centre, reach, reach2});
+}
+
+void to_world_near(const std::vector<BoundaryPiece>& body, const geometry::Pose& pose,
+                   const Vec2& centre, double reach, std::vector<BoundaryPiece>& out) {
+  Boundary world;
+  to_world_near(with_ends(body), pose, centre, reach, world);
+  for (auto& piece : world.pieces) out.push_back(std::move(piece));
 }
 
 Vec2 closest_on_segment(const Segment& s, const Vec2& p) {
@@ -301,20 +353,18 @@ ClosestPoints closest_points(const BoundaryPiece& a, const BoundaryPiece& b) {
   return closest_pieces(a, ends_of(a), b, ends_of(b));
 }
 
-ClosestPoints closest_points(const std::vector<BoundaryPiece>& a,
-                             const std::vector<BoundaryPiece>& b) {
+ClosestPoints closest_points(const Boundary& a, const Boundary& b) {
   ClosestPoints best;
   best.distance = std::numeric_limits<double>::infinity();
-  // the arcs' end points once per piece, not once per pair of pieces
-  thread_local std::vector<ArcEnds> ends_b;
-  ends_b.clear();
-  for (const auto& pb : b) ends_b.push_back(ends_of(pb));
-  for (const auto& pa : a) {
-    const ArcEnds ea = ends_of(pa);
-    for (std::size_t k = 0; k < b.size(); ++k)
-      keep_min_prefer_face(best, closest_pieces(pa, ea, b[k], ends_b[k]));
-  }
+  for (std::size_t i = 0; i < a.pieces.size(); ++i)
+    for (std::size_t k = 0; k < b.pieces.size(); ++k)
+      keep_min_prefer_face(best, closest_pieces(a.pieces[i], a.ends[i], b.pieces[k], b.ends[k]));
   return best;
+}
+
+ClosestPoints closest_points(const std::vector<BoundaryPiece>& a,
+                             const std::vector<BoundaryPiece>& b) {
+  return closest_points(with_ends(a), with_ends(b));
 }
 
 void face_weighted(const ClosestPoints& cp, double gap, Vec2& on_a, Vec2& on_b) {
@@ -331,26 +381,30 @@ void face_weighted(const ClosestPoints& cp, double gap, Vec2& on_a, Vec2& on_b) 
   on_b = (w[0] / sum) * cp.end_b[0] + (w[1] / sum) * cp.end_b[1];
 }
 
-Vec2 support_point(const std::vector<BoundaryPiece>& boundary, const Vec2& d) {
+Vec2 support_point(const Boundary& boundary, const Vec2& d) {
   Vec2 best;
   double best_h = -std::numeric_limits<double>::infinity();
   auto consider = [&](const Vec2& p) {
     const double h = core::dot(p, d);
     if (h > best_h) best_h = h, best = p;
   };
-  for (const auto& piece : boundary) {
-    if (const auto* s = std::get_if<Segment>(&piece)) {
+  for (std::size_t k = 0; k < boundary.pieces.size(); ++k) {
+    if (const auto* s = std::get_if<Segment>(&boundary.pieces[k])) {
       consider(s->a);
       consider(s->b);
     } else {
-      const auto& a = std::get<Arc>(piece);
-      const ArcEnds e = ends_of(a);
+      const auto& a = std::get<Arc>(boundary.pieces[k]);
+      const ArcEnds& e = boundary.ends[k];
       if (in_arc(e, d)) consider(a.centre + a.radius * d);
       consider(e.p0);
       consider(e.p1);
     }
   }
   return best;
+}
+
+Vec2 support_point(const std::vector<BoundaryPiece>& boundary, const Vec2& d) {
+  return support_point(with_ends(boundary), d);
 }
 
 }  // namespace picdem::dem

@@ -98,7 +98,7 @@ DemSolver::DemSolver(core::Comm comm, DemConfig config, std::vector<core::Box2> 
       box.lo = {std::min(box.lo.x, poly[v].x), std::min(box.lo.z, poly[v].z)};
       box.hi = {std::max(box.hi.x, poly[v].x), std::max(box.hi.z, poly[v].z)};
     }
-    obstacles_.push_back(std::move(pieces));
+    obstacles_.push_back(with_ends(std::move(pieces)));
     obstacle_boxes_.push_back(box);
   }
   law_ = cfg_.contact_law ? cfg_.contact_law : linear_spring_dashpot(cfg_);
@@ -142,7 +142,7 @@ void DemSolver::add_solids(const std::vector<SolidSpec>& solids) {
     if (index < 0) {
       ShapeInfo info;
       info.shape = spec.shape;
-      info.body = spec.shape->boundary();
+      info.body = with_ends(spec.shape->boundary());
       // the shape's declared fast path: a centred circle takes eq. 19 in closed form
       info.circle = spec.shape->fast_paths().centred_circle_radius > 0.0;
       info.radius = spec.shape->bounding_radius();
@@ -220,7 +220,7 @@ bool DemSolver::solid_pair(const SolidState& a, const SolidState& b, ContactKine
   wb.clear();
   to_world_near(sa.body, pose_of(a), b.x, sb.radius + gap, wa);
   to_world_near(sb.body, pose_of(b), a.x, sa.radius + gap, wb);
-  if (wa.empty() || wb.empty()) return false;
+  if (wa.pieces.empty() || wb.pieces.empty()) return false;
   const ClosestPoints cp = closest_points(wa, wb);
   // eq. 19 for any shapes: delta = 2 dx - distance between the real boundaries
   const double delta = gap - cp.distance;
@@ -262,7 +262,8 @@ bool DemSolver::wall_pair(const SolidState& a, int side, ContactKinematics& k) c
     k.arm_a = sa.radius * n;
     return true;
   }
-  const auto wa = to_world(sa.body, pose_of(a));
+  auto& wa = scratch_a_;
+  to_world(sa.body, pose_of(a), wa);
   const Vec2 deepest = support_point(wa, n);
   const double dist = wall - core::dot(deepest, n);
   const double delta = gap - dist;
@@ -271,7 +272,7 @@ bool DemSolver::wall_pair(const SolidState& a, int side, ContactKinematics& k) c
   const Vec2 t = core::perp(n);
   const Vec2 foot = deepest + dist * n;
   const double L = 4.0 * sa.radius + 1.0;
-  const ClosestPoints cp = closest_points(wa, {Segment{foot - L * t, foot + L * t}});
+  const ClosestPoints cp = closest_points(wa, with_ends({Segment{foot - L * t, foot + L * t}}));
   Vec2 on_a = deepest, on_wall;
   if (cp.face && cp.distance > 0.0) face_weighted(cp, gap, on_a, on_wall);
   k.normal = n;
@@ -287,7 +288,8 @@ bool DemSolver::obstacle_pair(const SolidState& a, std::size_t obstacle,
   const double reach = sa.radius + cfg_.gap();
   const core::Box2 around{{a.x.x - reach, a.x.z - reach}, {a.x.x + reach, a.x.z + reach}};
   if (!obstacle_boxes_[obstacle].overlaps(around)) return false;
-  const auto wa = to_world(sa.body, pose_of(a));
+  auto& wa = scratch_a_;
+  to_world(sa.body, pose_of(a), wa);
   const ClosestPoints cp = closest_points(wa, obstacles_[obstacle]);
   const double delta = cfg_.gap() - cp.distance;
   if (delta <= 0.0) return false;

@@ -7,6 +7,7 @@
 #include "picdem/dem/contact_geometry.hpp"
 #include "picdem/geometry/circle.hpp"
 #include "picdem/geometry/polygon.hpp"
+#include "picdem/geometry/shape_registry.hpp"
 
 using namespace picdem;
 using namespace picdem::dem;
@@ -150,4 +151,51 @@ TEST(ContactGeometry, ArcSpanTestAgreesWithSamplingOnEverySpan) {
       }
     }
   EXPECT_GT(checked, 1000);
+}
+
+// A body's boundary kept with its arcs' end data (the DEM's form) and placed by rotating the end
+// directions gives the ends the placed arcs' angles give, and the same closest points as the plain
+// pieces, for an ellipse (arcs only) and a rounded polygon (arcs and segments).
+TEST(ContactGeometry, PlacedEndDataAgreeWithThePlacedPieces) {
+  const geometry::ShapePtr shapes[] = {
+      geometry::make_ellipse(0.02, 0.008),
+      geometry::make_rounded_polygon({{-0.01, -0.01}, {0.012, -0.008}, {0.006, 0.011}}, 0.002,
+                                     nullptr)};
+  const geometry::Pose pa{{0.1, 0.2}, 2.7}, pb{{0.124, 0.207}, -8.1};
+  for (const auto& shape : shapes) {
+    const Boundary body = with_ends(shape->boundary());
+    Boundary wa, wb;
+    to_world(body, pa, wa);
+    to_world(body, pb, wb);
+    const auto plain_a = to_world(shape->boundary(), pa);
+    const auto plain_b = to_world(shape->boundary(), pb);
+    ASSERT_EQ(wa.pieces.size(), plain_a.size());
+    int arcs = 0;
+    for (std::size_t k = 0; k < plain_a.size(); ++k) {
+      const auto* arc = std::get_if<Arc>(&plain_a[k]);
+      if (!arc) continue;
+      ++arcs;
+      const ArcEnds& e = wa.ends[k];
+      EXPECT_NEAR(e.u0.x, std::cos(arc->phi0), 1e-15);
+      EXPECT_NEAR(e.u0.z, std::sin(arc->phi0), 1e-15);
+      EXPECT_NEAR(e.u1.x, std::cos(arc->phi1), 1e-15);
+      EXPECT_NEAR(e.u1.z, std::sin(arc->phi1), 1e-15);
+    }
+    EXPECT_GT(arcs, 0);
+    const ClosestPoints kept = closest_points(wa, wb), plain = closest_points(plain_a, plain_b);
+    EXPECT_NEAR(kept.distance, plain.distance, 1e-15);
+    EXPECT_NEAR(kept.on_a.x, plain.on_a.x, 1e-14);
+    EXPECT_NEAR(kept.on_b.z, plain.on_b.z, 1e-14);
+    // the pieces near the partner (within its bounding radius + the distance, as the DEM's
+    // bounding radius + gap for a pair in contact): a subset that keeps the closest points
+    Boundary near_a, near_b;
+    const double reach = shape->bounding_radius() + 1.01 * plain.distance;
+    to_world_near(body, pa, pb.x, reach, near_a);
+    to_world_near(body, pb, pa.x, reach, near_b);
+    EXPECT_LT(near_a.pieces.size(), wa.pieces.size());
+    EXPECT_NEAR(closest_points(near_a, near_b).distance, plain.distance, 1e-15);
+    const core::Vec2 down{0.0, -1.0};
+    const core::Vec2 low = support_point(wa, down), low_plain = support_point(plain_a, down);
+    EXPECT_NEAR(low.z, low_plain.z, 1e-15);
+  }
 }

@@ -16,6 +16,7 @@
 #include "picdem/core/comm.hpp"
 #include "picdem/core/solid_state.hpp"
 #include "picdem/core/vec2.hpp"
+#include "picdem/dem/contact_geometry.hpp"
 #include "picdem/dem/contact_law.hpp"
 #include "picdem/dem/parameters.hpp"
 #include "picdem/geometry/shape.hpp"
@@ -111,7 +112,7 @@ class DemSolver {
  private:
   struct ShapeInfo {
     geometry::ShapePtr shape;
-    std::vector<geometry::BoundaryPiece> body;
+    Boundary body;        ///< body frame, with the arcs' end data
     bool circle = false;  ///< declares the centred-circle fast path (Shape::fast_paths)
     double radius = 0.0;  ///< bounding radius
   };
@@ -143,7 +144,7 @@ class DemSolver {
   DemConfig cfg_;
   std::vector<core::Box2> regions_;
   core::Box2 tank_;
-  std::vector<std::vector<geometry::BoundaryPiece>> obstacles_;
+  std::vector<Boundary> obstacles_;
   std::vector<core::Box2> obstacle_boxes_;
   std::vector<ShapeInfo> shapes_;
   std::map<const geometry::Shape*, int> shape_index_;  // shapes_ index of each shape
@@ -194,7 +195,7 @@ class DemSolver {
   // obstacle's box (a floor of 300 teeth made that 3/4 of a dry collapse's time)
   std::vector<int> obs_start_, obs_;
   // world-frame boundary pieces of the pair being evaluated (scratch, no state)
-  mutable std::vector<geometry::BoundaryPiece> scratch_a_, scratch_b_;
+  mutable Boundary scratch_a_, scratch_b_;
 };
 
 }  // namespace picdem::dem
