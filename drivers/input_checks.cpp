@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "picdem/core/error.hpp"
+#include "picdem/dem/parameters.hpp"
 #include "picdem/fluid/pressure_solver.hpp"
 #include "picdem/fluid/viscous_settings.hpp"
 #include "solid_placement.hpp"
@@ -147,6 +148,9 @@ the value and what is allowed, when:
 - `time/dt_max` lies below `time/dt_min`, or (with water and `time/cfl_speed: grid`) `time/cfl`
   is so small that gravity's bound sqrt(cfl h / |g|) lies below `time/dt_min`: every step would
   stop the run as blown up;
+- `dem/theta` is not below `dem/gap_cells`: eq. 10's stiffness lets the heaviest solid's weight
+  alone press a contact by theta cells, so resting solids would close the whole imaginary gap and
+  stop the run as an overlap of real boundaries (a run that stops so names both keys);
 - water regions reach outside the tank, are empty, or are thinner than one particle spacing
   (`grid/cell_size` / `particles/per_cell_1d`: they would seed no particle);
 - `solver/Belos`, `solver/MueLu` (and the lists merged from `solver/MueLu_solids`,
@@ -181,6 +185,11 @@ void check_case(const core::Comm& comm, const core::Params& params) {
   }
   try {
     fluid::viscous_solver_settings_from(params);  // checks the viscous_solver/ lists
+  } catch (const core::InputError& e) {
+    errors.push_back(e.what());
+  }
+  try {
+    dem::config_from(params, params.real("grid/cell_size"));  // the DEM's keys taken together
   } catch (const core::InputError& e) {
     errors.push_back(e.what());
   }

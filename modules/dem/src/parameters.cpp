@@ -115,6 +115,19 @@ DemConfig config_from(const core::Params& p, double h) {
     throw core::InputError(m.str());
   }
   c.h = h;
+  if (c.theta >= c.gap_cells) {
+    // eq. 10: the heaviest solid's weight alone presses a contact by theta h; from theta =
+    // gap_cells on, a solid resting on another (or on the floor) has its real boundary on the
+    // other's, which stops the run as an overlap at the first resting contact
+    std::ostringstream m;
+    m << "key 'dem/theta' = " << c.theta << " with 'dem/gap_cells' = " << c.gap_cells
+      << ": eq. 10 sizes the contact stiffness so that the heaviest solid's weight alone presses a "
+         "contact by theta cells, which reaches the whole imaginary gap: resting solids would "
+         "touch with their real boundaries; allowed: dem/theta < dem/gap_cells (the paper: "
+         "theta 0.01 with a gap of 2 cells; a stack of n solids presses its lowest contact "
+         "about n times as far)";
+    throw core::InputError(m.str());
+  }
   c.contact_law = contact_law_type(p.string("dem/contact_law")).build(p, c);
   return c;
 }

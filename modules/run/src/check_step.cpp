@@ -34,7 +34,11 @@ void check_step(const coupling::Diagnostics& g, double h, bool has_fluid, bool g
       m << "step " << g.step << " at t = " << g.t << " s: solid " << c.id_i << " lies inside "
         << (c.id_j >= 0 ? "solid " + std::to_string(c.id_j) : std::string("a wall or obstacle"))
         << " (overlap of the real boundaries " << c.delta - gap << " m at (" << c.point.x << ", "
-        << c.point.z << ")): the run has blown up";
+        << c.point.z << ")): the run has blown up; the contacts are too soft for the loads "
+        << "they carry (eq. 10 lets the heaviest solid's weight press a contact by dem/theta = "
+        << dem->config().theta << " cells of the gap's " << dem->config().gap_cells
+        << "; a stack or an impact presses many times that): lower dem/theta or raise "
+        << "dem/gap_cells";
       mine = m.str();
     }
   const long long bad = comm.max(mine.empty() ? -1LL : static_cast<long long>(comm.rank()));
