@@ -353,12 +353,39 @@ ClosestPoints closest_points(const BoundaryPiece& a, const BoundaryPiece& b) {
   return closest_pieces(a, ends_of(a), b, ends_of(b));
 }
 
+namespace {
+/// A lower bound of the distance between two pieces from an arc's whole circle (the distance of
+/// any point of an arc to a set is at least that of its centre less the radius); -inf for two
+/// segments, whose exact test is as cheap.
+double lower_bound(const BoundaryPiece& a, const BoundaryPiece& b) {
+  const auto* arc_a = std::get_if<Arc>(&a);
+  const auto* arc_b = std::get_if<Arc>(&b);
+  if (arc_a && arc_b) return length(arc_b->centre - arc_a->centre) - arc_a->radius - arc_b->radius;
+  if (arc_a) {
+    const Vec2 foot = closest_on_segment(std::get<Segment>(b), arc_a->centre);
+    return length(foot - arc_a->centre) - arc_a->radius;
+  }
+  if (arc_b) {
+    const Vec2 foot = closest_on_segment(std::get<Segment>(a), arc_b->centre);
+    return length(foot - arc_b->centre) - arc_b->radius;
+  }
+  return -std::numeric_limits<double>::infinity();
+}
+}  // namespace
+
 ClosestPoints closest_points(const Boundary& a, const Boundary& b) {
   ClosestPoints best;
   best.distance = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < a.pieces.size(); ++i)
-    for (std::size_t k = 0; k < b.pieces.size(); ++k)
+    for (std::size_t k = 0; k < b.pieces.size(); ++k) {
+      // a pair that cannot come within keep_min_prefer_face's tolerance of the best so far
+      // cannot replace it (a face, which may win a tie, is two segments, never skipped): skipping
+      // it leaves the result, bits included, as the full loop gives it
+      if (std::isfinite(best.distance) &&
+          lower_bound(a.pieces[i], b.pieces[k]) > best.distance + 1e-9 * (1.0 + best.distance))
+        continue;
       keep_min_prefer_face(best, closest_pieces(a.pieces[i], a.ends[i], b.pieces[k], b.ends[k]));
+    }
   return best;
 }
 

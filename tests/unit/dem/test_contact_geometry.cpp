@@ -199,3 +199,35 @@ TEST(ContactGeometry, PlacedEndDataAgreeWithThePlacedPieces) {
     EXPECT_NEAR(low.z, low_plain.z, 1e-15);
   }
 }
+
+// closest_points of two boundaries skips the piece pairs whose circles' bound exceeds the best so
+// far: over random poses of two curved shapes near each other its distance is the minimum over
+// every pair of pieces (to keep_min_prefer_face's 1e-9 tie tolerance).
+TEST(ContactGeometry, SkippedPiecePairsNeverHoldTheMinimum) {
+  const geometry::ShapePtr ellipse = geometry::make_ellipse(0.02, 0.008);
+  const geometry::ShapePtr rounded = geometry::make_rounded_polygon(
+      {{-0.01, -0.01}, {0.012, -0.008}, {0.006, 0.011}}, 0.002, nullptr);
+  const Boundary be = with_ends(ellipse->boundary()), br = with_ends(rounded->boundary());
+  unsigned state = 777u;
+  auto uniform = [&state]() {
+    state = state * 1664525u + 1013904223u;
+    return (state >> 8) * (1.0 / 16777216.0);
+  };
+  int pairs = 0;
+  for (int trial = 0; trial < 1000; ++trial) {
+    const geometry::Pose pa{{0.0, 0.0}, 2 * pi * uniform()};
+    const double angle = 2 * pi * uniform(), dist = 0.015 + 0.03 * uniform();
+    const geometry::Pose pb{{dist * std::cos(angle), dist * std::sin(angle)}, 2 * pi * uniform()};
+    const Boundary& body_b = trial % 2 ? br : be;
+    Boundary wa, wb;
+    to_world(be, pa, wa);
+    to_world(body_b, pb, wb);
+    double every = std::numeric_limits<double>::infinity();
+    for (const auto& p : wa.pieces)
+      for (const auto& q : wb.pieces) every = std::min(every, closest_points(p, q).distance);
+    const double d = closest_points(wa, wb).distance;
+    ASSERT_NEAR(d, every, 1e-9 * (1.0 + every)) << "trial " << trial;
+    ++pairs;
+  }
+  EXPECT_EQ(pairs, 1000);
+}
