@@ -85,13 +85,34 @@ void adopt_cuts(Simulation::Impl& m, const grid::Cuts& cuts) {
         *m.decomp, m.params, fluid::PressureSolver::Equation::DensityCorrection);
 }
 
-// grid/decomposition = weighted: cut lines balancing the particles' work (particles::cell_work,
-// grid::worthwhile_cuts). A function of the particles and the present cuts only, both of which a
-// checkpoint keeps.
+// A dry run's work per owned cell: the solids, kWorkSolid at the cell of each centre, over every
+// cell's kWorkCell (a dry run has no grid work; the DEM's subcycles are the whole step).
+constexpr long long kWorkSolid = 1000;
+std::vector<long long> solid_work(const grid::Decomposition& d, const dem::DemSolver& dem) {
+  const auto& spec = d.spec();
+  const core::IndexBox own = d.owned_cells();
+  std::vector<long long> work(static_cast<std::size_t>(own.size()), particles::kWorkCell);
+  for (const auto& s : dem.owned()) {
+    int i, k;
+    spec.cell_of(s.x, i, k);
+    if (own.contains(i, k))
+      work[static_cast<std::size_t>(k - own.k0) * static_cast<std::size_t>(own.nx()) +
+           static_cast<std::size_t>(i - own.i0)] += kWorkSolid;
+  }
+  return work;
+}
+
+// grid/decomposition = weighted: cut lines balancing the particles' work (particles::cell_work)
+// or, in a dry run, the solids' (solid_work), by grid::worthwhile_cuts. A function of the
+// particles or solids and the present cuts only, all of which a checkpoint keeps.
 void rebalance_cuts(Simulation::Impl& m) {
-  if (!m.set.balance.weighted || m.comm.size() == 1 || !m.set.has_fluid) return;
+  if (!m.set.balance.weighted || m.comm.size() == 1) return;
+  if (!m.set.has_fluid && !m.dem) return;
   const auto cuts =
-      grid::worthwhile_cuts(*m.decomp, particles::cell_work(*m.decomp, m.particles), m.set.balance);
+      grid::worthwhile_cuts(*m.decomp,
+                            m.set.has_fluid ? particles::cell_work(*m.decomp, m.particles)
+                                            : solid_work(*m.decomp, *m.dem),
+                            m.set.balance);
   if (!cuts) return;
   adopt_cuts(m, *cuts);
   core::log(m.comm, "picdem: step " + std::to_string(m.step) + ": " + grid::describe(*cuts));
@@ -129,6 +150,8 @@ Simulation::Simulation(core::Comm comm, core::Params params) : m_(std::make_uniq
     m.particles = seed_water(m);
     rebalance_cuts(m);
     if (m.set.fluid.open.any()) m.diag.open_volumes = {0.0, 0.0};  // in, out since t = 0
+  } else {
+    rebalance_cuts(m);  // a dry run: cut lines that share out the solids
   }
 }
 
@@ -186,8 +209,8 @@ void Simulation::step() {
       core::log(m.comm, "picdem: step " + std::to_string(m.step + 1) +
                             ": CG broke down on an indefinite preconditioner; solved again with "
                             "solver/MueLu_solids merged (doc/fluid.md)");
-    project(L, set, dt, m.fluid);                                                 // project
-    if (set.fluid.open.any())  // volumes through the open sides (doc/open_boundaries.md)
+    project(L, set, dt, m.fluid);  // project
+    if (set.fluid.open.any())      // volumes through the open sides (doc/open_boundaries.md)
       open_flux = fluid::open_fluxes(m.fluid.u, m.fluid.w, set.fluid.open, L.d, m.comm);
     if (!m.obstacles.empty())  // for forces.csv
       m.obstacle_loads = fluid::obstacle_pressure_loads(solids.cut, m.fluid.cells, L.d, m.fluid.p,
@@ -269,7 +292,7 @@ double Simulation::last_time_step() const {
 // rebalance, which the file does not hold); otherwise the caller rebalances after the restore
 bool Simulation::take_cuts_of(const std::vector<core::IndexBox>& boxes) {
   Impl& s = *m_;
-  if (!s.set.balance.weighted || s.comm.size() == 1 || !s.set.has_fluid) return false;
+  if (!s.set.balance.weighted || s.comm.size() == 1 || (!s.set.has_fluid && !s.dem)) return false;
   const auto cuts = grid::fitting_cuts_of_boxes(s.set.spec, boxes, s.comm.size(), s.set.balance);
   if (!cuts.xs.empty()) adopt_cuts(s, cuts);
   return !cuts.xs.empty();

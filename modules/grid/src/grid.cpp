@@ -36,8 +36,8 @@ void declare_parameters(core::ParamSchema& schema) {
   schema.integer("grid/ranks_z", 0, "ranks along z (0: chosen with ranks_x)").non_negative();
   schema.string("grid/decomposition", "weighted", {"weighted", "uniform"},
                 "weighted: the column and row cut lines balance the work of the cells (fluid "
-                "cells and particles), and the process grid is the one with the lightest "
-                "heaviest block; uniform: equal strips (doc/performance.md)");
+                "cells and particles; in a dry run the solids), and the process grid is the one "
+                "with the lightest heaviest block; uniform: equal strips (doc/performance.md)");
   schema
       .integer("grid/rebalance_interval", 25,
                "weighted: the cut lines are recomputed every this many steps (from the step "

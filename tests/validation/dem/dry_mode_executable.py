@@ -7,7 +7,10 @@ lies just beyond the stack's foot, so the cylinders cross it as the stack collap
 from the solids.csv the executable writes:
   - every output time lists the 33 cylinders, ids 0..32, and the times match output/interval;
   - the 4-rank file equals the 1-rank file byte for byte (the DEM alone is bitwise independent
-    of the rank count, doc/dem.md), and cylinders did cross the first rank boundary;
+    of the rank count, doc/dem.md), and cylinders did cross the first rank boundary (the 4-rank
+    run takes grid/decomposition = uniform, so that the boundary lies where the test puts it);
+  - a 2-rank run with the default decomposition (weighted: a dry run's cut lines share out the
+    solids, doc/performance.md) moved its cut lines (picdem.log) and equals the 1-rank file too;
   - the mean centre (eq. 26) divided by the tank length follows the experiment of Zhang et al.
     (2009) within |d(x/L)| <= 0.03 and |d(z/L)| <= 0.015 at 0.1, 0.3 and 0.5 s, the tolerances of
     test_dem_dry_collapse (which runs the same case through the library, not the executable).
@@ -77,7 +80,9 @@ def main():
     os.makedirs(work, exist_ok=True)
     one = run(picdem, case, os.path.join(work, "np1"), 1, mpiexec, [])
     four = run(picdem, case, os.path.join(work, "np4"), 4, mpiexec,
-               ["--set", "grid/ranks_x=4", "--set", "grid/ranks_z=1"])
+               ["--set", "grid/ranks_x=4", "--set", "grid/ranks_z=1",
+                "--set", "grid/decomposition=uniform"])
+    two = run(picdem, case, os.path.join(work, "np2"), 2, mpiexec, [])
     failures = []
     with open(os.path.join(os.path.dirname(one), "case_resolved.yaml")) as f:
         ran_h = float(re.search(r"^\s*cell_size:\s*([0-9.eE+-]+)", f.read(), re.M).group(1))
@@ -103,6 +108,16 @@ def main():
     print(f"1 rank vs 4 ranks (ranks_x = 4): solids.csv {'identical' if same else 'DIFFERENT'}")
     if not same:
         failures.append("solids.csv of 4 ranks differs from 1 rank (DEM must be bitwise)")
+    with open(one, "rb") as a, open(two, "rb") as b:
+        same_two = a.read() == b.read()
+    with open(os.path.join(os.path.dirname(two), "picdem.log")) as f:
+        cut_lines = [line.strip() for line in f if "cut lines" in line]
+    print(f"1 rank vs 2 ranks (weighted): solids.csv {'identical' if same_two else 'DIFFERENT'}; "
+          f"cut lines moved {len(cut_lines)} time(s): {cut_lines[:1]}")
+    if not same_two:
+        failures.append("solids.csv of 2 ranks (weighted) differs from 1 rank")
+    if not cut_lines:
+        failures.append("the 2-rank dry run never moved its cut lines to share out the solids")
     # grid/ranks_x = 4 splits the 572 columns evenly: the first boundary is at 143 cells
     boundary = 143 * h
     crossed = sorted({s[0] for t in times for s in frames[t] if s[1] > boundary})
