@@ -18,23 +18,7 @@ double length(const Vec2& v) {
   return std::sqrt(core::norm2(v));
 }
 
-/// Angle of the direction d measured from phi0, in [0, 2 pi).
-double angle_from(double phi0, const Vec2& d) {
-  double a = std::atan2(d.z, d.x) - phi0;
-  a = std::fmod(a, two_pi);
-  if (a < 0.0) a += two_pi;
-  return a;
-}
-
-bool in_arc(const Arc& a, const Vec2& d) {
-  return angle_from(a.phi0, d) <= a.phi1 - a.phi0;
-}
-
-Vec2 arc_point(const Arc& a, double phi) {
-  return a.centre + a.radius * Vec2{std::cos(phi), std::sin(phi)};
-}
-
-/// An arc's end data from its angles (the points are the same expressions as arc_point).
+/// An arc's end data from its angles.
 ArcEnds ends_of(const Arc& a) {
   ArcEnds e;
   e.u0 = Vec2{std::cos(a.phi0), std::sin(a.phi0)};
@@ -323,12 +307,7 @@ Vec2 closest_on_segment(const Segment& s, const Vec2& p) {
 }
 
 Vec2 closest_on_arc(const Arc& a, const Vec2& p) {
-  const Vec2 d = p - a.centre;
-  const double r = length(d);
-  if (r > 0.0 && in_arc(a, d)) return a.centre + (a.radius / r) * d;
-  const Vec2 p0 = arc_point(a, a.phi0), p1 = arc_point(a, a.phi1);
-  if (r == 0.0) return p0;
-  return core::norm2(p - p0) <= core::norm2(p - p1) ? p0 : p1;
+  return closest_on_arc(a, ends_of(a), p);
 }
 
 namespace {
