@@ -9,6 +9,10 @@ centre +- d50/2 (2.5 mm; the sizes run from 4 to 6 mm):
   L_inf = front of the continuous deposit (grains beyond a horizontal gap of 3 d_max = 18 mm
           between neighbouring centres are counted as ejected, not as runout);
   H_inf = highest grain top at the end.
+Bulk measures of the same deposit, which a few grains at its tip do not move:
+  x90, x95 = the positions below which 90% and 95% of the grains' centres lie (+ d50/2);
+  edge10   = the end of the deposit's part at least 0.1 H0 thick, counted from the wall in bins
+             of d50 (the highest grain top in each).
 Rest: L_inf and H_inf 0.1 s before the end are printed next to the final ones.
 Fits log((L_inf - L0)/L0) and log(H_inf/L0) against log a by least squares over a >= 2
 (the large-a regime of Lube et al. 2005), over a >= 1 and over all a; prints the fastest grain at
@@ -39,6 +43,24 @@ def runout(grains):
 
 def height(grains):
     return max(z for _, z, _ in grains) + R50 - FLOOR
+
+
+def quantile_x(grains, q):
+    """The position below which a share q of the grains' centres lie, plus d50/2."""
+    xs = sorted(x for x, _, _ in grains)
+    return xs[max(0, math.ceil(q * len(xs)) - 1)] + R50
+
+
+def thick_edge(grains, thickness):
+    """End of the deposit's part at least `thickness` thick, from the wall, in bins of d50."""
+    tops = {}
+    for x, z, _ in grains:
+        k = int(x / (2 * R50))
+        tops[k] = max(tops.get(k, 0.0), z + R50 - FLOOR)
+    k = 0
+    while tops.get(k, 0.0) >= thickness:
+        k += 1
+    return k * 2 * R50
 
 
 def fit(xs, ys):
@@ -78,7 +100,9 @@ def main():
         rows.append(dict(a_nom=a_nom, n=len(fr[ts[0]]), L0=l0, H0=h0, a=h0 / l0, t_end=t_end,
                          L_inf=l_inf, H_inf=height(fr[t_end]), ejected=ejected,
                          L_prev=l_prev, H_prev=height(fr[t_prev]),
-                         vmax=max(v for _, _, v in fr[t_end])))
+                         vmax=max(v for _, _, v in fr[t_end]),
+                         x90=quantile_x(fr[t_end], 0.9), x95=quantile_x(fr[t_end], 0.95),
+                         edge10=thick_edge(fr[t_end], 0.1 * h0)))
     print("a_nom   N     L0      H0      a      t_end  L_inf   (0.1 s before)  H_inf   (before)"
           "  ejected  (L_inf-L0)/L0  H_inf/L0  v_max [m/s]")
     for r in rows:
@@ -88,9 +112,14 @@ def main():
               f"{r['t_end']:.2f}  {r['L_inf']:.4f}  ({r['L_prev']:.4f})       {r['H_inf']:.4f}  "
               f"({r['H_prev']:.4f})  {r['ejected']:5d}    {r['run']:.3f}          {r['h']:.3f}     "
               f"{r['vmax']:.3f}")
+    print("bulk (over a): a_nom  (x90-L0)/L0  (x95-L0)/L0  (edge10-L0)/L0  (L_inf-L0)/L0")
+    for r in rows:
+        print(f"               {r['a_nom']:<5g}" + "".join(
+            f"  {(r[k] - r['L0']) / r['L0'] / r['a']:9.3f} a" for k in ("x90", "x95", "edge10",
+                                                                        "L_inf")))
     with open(os.path.join(out, "collapse.csv"), "w") as f:
         keys = ["a_nom", "n", "L0", "H0", "a", "t_end", "L_inf", "H_inf", "ejected", "run", "h",
-                "vmax"]
+                "vmax", "x90", "x95", "edge10"]
         f.write(",".join(keys) + "\n")
         for r in rows:
             f.write(",".join(f"{r[k]:.6g}" for k in keys) + "\n")

@@ -31,7 +31,10 @@ def pictures_by_time(run):
             if len(cols) == len(header):
                 times[int(float(cols[istep]))] = float(cols[it])
     found = []
-    for name in os.listdir(os.path.join(run, "pictures")):
+    folder = os.path.join(run, "pictures")
+    if not os.path.isdir(folder):
+        raise SystemExit(f"{run}: no pictures/ folder (the run had output/png false)")
+    for name in os.listdir(folder):
         m = re.fullmatch(r"frame_(\d+)\.png", name)
         if m and int(m.group(1)) in times:
             found.append((times[int(m.group(1))], os.path.join(run, "pictures", name)))

@@ -80,7 +80,7 @@ Output::Output(core::Comm comm, const core::Params& params, const grid::Decompos
   }
   if (comm_.is_root()) {
     fs::create_directories(dir_);
-    fs::create_directories(dir_ + "/pictures");
+    if (params_.boolean("output/png")) fs::create_directories(dir_ + "/pictures");
     std::ofstream(dir_ + "/case_resolved.yaml") << params_.to_yaml();
   }
   comm_.barrier();
@@ -211,11 +211,18 @@ void Output::finish(const coupling::Simulation& sim) {
   std::ostringstream table;
   core::summarize_timers(comm_, table);
   if (comm_.is_root()) std::ofstream(dir_ + "/timers.txt") << table.str();
-  core::log(comm_, "output in " + fs::absolute(dir_).string() +
-                       ":\n  pictures/frame_NNNNNN.png (NNNNNN = step)" + movie +
-                       "\n  picdem.xdmf + frames/*.h5 (ParaView; one grid each: cells.xdmf, "
-                       "particles.xdmf, solids.xdmf, obstacles.xdmf)\n  timeseries.csv, "
-                       "solids.csv, forces.csv, case_resolved.yaml, timers.txt");
+  // Only what this run wrote: a case with output/png or output/paraview false has no pictures
+  // or ParaView files, and the list must not send the user looking for them.
+  std::string written;
+  if (params_.boolean("output/png"))
+    written += "\n  pictures/frame_NNNNNN.png (NNNNNN = step)" + movie;
+  if (params_.boolean("output/paraview"))
+    written +=
+        "\n  picdem.xdmf + frames/*.h5 (ParaView; one grid each: cells.xdmf, "
+        "particles.xdmf, solids.xdmf, obstacles.xdmf)";
+  core::log(comm_,
+            "output in " + fs::absolute(dir_).string() + ":" + written +
+                "\n  timeseries.csv, solids.csv, forces.csv, case_resolved.yaml, timers.txt");
 }
 
 }  // namespace picdem::run

@@ -10,6 +10,7 @@ import os
 import re
 import subprocess
 import sys
+import time
 
 import h5py
 import matplotlib.image
@@ -19,8 +20,19 @@ out, script, xvfb, pvpython = sys.argv[1:5]
 png = out + "_paraview.png"
 if os.path.exists(png):
     os.remove(png)
-r = subprocess.run([xvfb, "-a", pvpython, script, out, "--out", png], capture_output=True,
-                   text=True, timeout=300)
+# The virtual X server is sometimes not there when pvpython opens its window ("bad X server
+# connection", SIGABRT in vtkXOpenGLRenderWindow::WindowInitialize, before the script runs): seen
+# under load, while the server of an earlier xvfb-run was still going away. That start-up race of
+# the test's display, not the script, is retried after a pause, at most three times, and said so.
+for attempt in range(4):
+    if attempt:
+        time.sleep(5.0)
+    r = subprocess.run([xvfb, "-a", pvpython, script, out, "--out", png], capture_output=True,
+                       text=True, timeout=300)
+    if r.returncode == 0 or "WindowInitialize" not in r.stdout + r.stderr:
+        break
+    print(f"attempt {attempt + 1}: the X server was not ready for a window (exit {r.returncode});"
+          " retried")
 failures = []
 m = re.search(r"wrote .* \(t = ([0-9.e+-]+) s, (\d+) particles\)", r.stdout)
 steps = sorted(int(f[6:-3]) for f in os.listdir(os.path.join(out, "frames")) if f.endswith(".h5"))
