@@ -211,7 +211,9 @@ void Simulation::step() {
                             "solver/MueLu_solids merged (doc/fluid.md)");
     project(L, set, dt, m.fluid);  // project
     if (set.fluid.open.any())      // volumes through the open sides (doc/open_boundaries.md)
-      open_flux = fluid::open_fluxes(m.fluid.u, m.fluid.w, set.fluid.open, L.d, m.comm);
+      open_flux = fluid::open_fluxes(m.fluid.u, m.fluid.w, m.fluid.cells,
+                                     set.surface.ghost_fluid ? &m.fluid.surface : nullptr,
+                                     set.fluid.open, L.d, m.comm);
     if (!m.obstacles.empty())  // for forces.csv
       m.obstacle_loads = fluid::obstacle_pressure_loads(solids.cut, m.fluid.cells, L.d, m.fluid.p,
                                                         set.quadrature, m.obstacles.size());

@@ -139,23 +139,46 @@ void open_surface_fractions(SurfaceFractions& sf, const OpenBoundaries& o,
   }
 }
 
-OpenFluxes open_fluxes(const FaceField& u, const FaceField& w, const OpenBoundaries& o,
+OpenFluxes open_fluxes(const FaceField& u, const FaceField& w, const CellStates& cells,
+                       const SurfaceFractions* surface, const OpenBoundaries& o,
                        const grid::Decomposition& d, const core::Comm& comm) {
   const grid::GridSpec& g = d.spec();
+  constexpr auto kFluid = static_cast<signed char>(grid::CellState::Fluid);
+  constexpr auto kAir = static_cast<signed char>(grid::CellState::Air);
   double in = 0.0, out = 0.0;
   for (std::size_t side = 0; side < 4; ++side) {
     const OpenSide& s = o.side[side];
     if (s.kind == OpenKind::Wall) continue;
-    const FaceField& field = side < 2 ? u : w;
+    const bool x_side = side < 2;
+    const FaceField& field = x_side ? u : w;
     const auto& own = field.owned();
+    // the cell inside a side's face (i, k): the face's own index on the left and bottom, one less
+    // on the right and top
+    const int di = side == 1 ? -1 : 0, dk = side == 3 ? -1 : 0;
+    // the wet part of a face on one side of its cell's centre: h/2, or theta h up to the surface
+    // when the neighbour along the side (cell (ci + ti, ck + tk), inside the tank) is air; the
+    // face between the two cells holds theta (its index: the larger of the two cells')
+    const auto wet_half = [&](int ci, int ck, int ti, int tk) {
+      const int ni = ci + ti, nk = ck + tk;
+      const bool beyond = ni < 0 || nk < 0 || ni >= g.nx || nk >= g.nz;  // the tank's wall
+      if (!surface || beyond || !cells.in_storage(ni, nk) || cells(ni, nk) != kAir)
+        return 0.5 * g.h;
+      const FaceField& theta = x_side ? surface->theta_z : surface->theta_x;
+      const int fi = std::max(ci, ni), fk = std::max(ck, nk);
+      return std::min(0.5, theta(fi, fk)) * g.h;
+    };
     for_open_faces(field, s, side, g, [&](int i, int k, int) {
       if (!own.contains(i, k)) return;
-      // inward volume rate through the face: E u.n_in = h (sign) u
-      const double q = g.h * inward(side) * field(i, k);
-      if (s.kind == OpenKind::Inflow)
-        in += q;
-      else
-        out -= q;
+      // inward volume rate through the face: wet length times u.n_in
+      const double un = inward(side) * field(i, k);
+      if (s.kind == OpenKind::Inflow) {
+        in += g.h * un;
+        return;
+      }
+      const int ci = i + di, ck = k + dk;
+      if (cells(ci, ck) != kFluid) return;
+      const int ti = x_side ? 0 : 1, tk = x_side ? 1 : 0;
+      out -= (wet_half(ci, ck, ti, tk) + wet_half(ci, ck, -ti, -tk)) * un;
     });
   }
   return {comm.sum(in), comm.sum(out)};

@@ -142,9 +142,28 @@ TEST(OpenBoundary, WallVelocitiesAndGhostsOfOpenSides) {
   for (int k = 0; k < 4; ++k) EXPECT_EQ(E.E_x(8, k), 0.05);
   EXPECT_EQ(E.E_z(3, 0), 0.0);
   // fluxes: in through two faces, out through four
-  const auto q = fluid::open_fluxes(u, w, cfg.open, d, self);
+  auto cells = fluid_inside_air_outside(d);
+  const auto q = fluid::open_fluxes(u, w, cells, nullptr, cfg.open, d, self);
   EXPECT_NEAR(q.inflow, 2 * 0.05 * 0.2, 1e-15);
   EXPECT_NEAR(q.outflow, 0.05 * (0.31 + 3 * 0.7), 1e-15);
+  // Water below z = 0.1 only: the outflow faces beside the two air cells at the right side (k =
+  // 2, 3) carry the air's velocity and move no water; the inflow's faces count whatever is inside
+  // (its particles are injected into them).
+  for (int k = 2; k < 4; ++k)
+    for (int i = 0; i < 8; ++i) cells(i, k) = kAir;
+  const auto q_air = fluid::open_fluxes(u, w, cells, nullptr, cfg.open, d, self);
+  EXPECT_NEAR(q_air.inflow, 2 * 0.05 * 0.2, 1e-15);
+  EXPECT_NEAR(q_air.outflow, 0.05 * (0.31 + 0.7), 1e-15);
+  // With the sub-cell surface 0.3 h above the centre of the top fluid cell at the outflow (the
+  // face between cells (7, 1) and (7, 2)), that cell's outflow face is wet over h/2 + 0.3 h; the
+  // bottom cell's face is whole (the floor below it is a wall, not a surface).
+  fluid::SurfaceFractions surface{FaceField(d, Stagger::FaceX, 1.0),
+                                  FaceField(d, Stagger::FaceZ, 1.0)};
+  surface.theta_z(7, 2) = 0.3;
+  surface.theta_z(7, 0) = 0.2;  // the floor's face: not a surface, never read
+  const auto q_wet = fluid::open_fluxes(u, w, cells, &surface, cfg.open, d, self);
+  EXPECT_NEAR(q_wet.inflow, 2 * 0.05 * 0.2, 1e-15);
+  EXPECT_NEAR(q_wet.outflow, 0.05 * (0.8 * 0.31 + 0.7), 1e-15);
 }
 
 // open/right/outflow_velocity: zero_gradient over z in [0.05, 0.15] (faces k = 1, 2 of h = 0.05):
@@ -256,7 +275,7 @@ TEST(OpenBoundary, ProjectionThroughAnOpenChannel) {
   }
   for (int k = 0; k <= 4; ++k)
     for (int i = 0; i < 6; ++i) EXPECT_NEAR(w(i, k), 0.0, 1e-10);
-  const auto q = fluid::open_fluxes(u, w, cfg.open, d, self);
+  const auto q = fluid::open_fluxes(u, w, cells, nullptr, cfg.open, d, self);
   EXPECT_NEAR(q.inflow, 0.4 * 0.2, 1e-14);
   EXPECT_NEAR(q.outflow, 0.4 * 0.2, 1e-10);
 }

@@ -38,11 +38,18 @@ void open_surface_fractions(SurfaceFractions& s, const OpenBoundaries& o,
                             const grid::Decomposition& d);
 
 /// Volume rates through the open faces over all ranks [m^2/s per unit depth]: inflow (inward) and
-/// outflow (outward), from the face velocities times the open length h.
+/// outflow (outward), from the face velocities times the face's wet length. An inflow face counts
+/// whole (its particles are injected whatever lies inside). An outflow face counts only where the
+/// cell inside it is fluid (above the water an outflow face carries the extrapolated velocity of
+/// the air, which moves no water), and where that cell holds the free surface (an air cell beside
+/// it along the side) only up to the surface: h/2 on each side of the centre, or theta h towards
+/// an air neighbour (`surface`, the ghost-fluid fractions; null: whole faces).
+/// doc/open_boundaries.md, "Volume accounting".
 struct OpenFluxes {
   double inflow = 0.0, outflow = 0.0;
 };
-OpenFluxes open_fluxes(const grid::FaceField& u, const grid::FaceField& w, const OpenBoundaries& o,
+OpenFluxes open_fluxes(const grid::FaceField& u, const grid::FaceField& w, const CellStates& cells,
+                       const SurfaceFractions* surface, const OpenBoundaries& o,
                        const grid::Decomposition& d, const core::Comm& comm);
 
 }  // namespace picdem::fluid
