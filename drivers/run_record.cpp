@@ -11,13 +11,7 @@
 #include "picdem/core/log.hpp"
 #include "picdem/grid/grid.hpp"
 #include "picdem/io/checkpoint_files.hpp"
-
-#ifndef PICDEM_VERSION
-#define PICDEM_VERSION "unknown"
-#endif
-#ifndef PICDEM_GIT_HASH
-#define PICDEM_GIT_HASH "unknown"
-#endif
+#include "picdem_version.hpp"  // generated at build time (cmake/git_version.cmake)
 
 namespace picdem::driver {
 namespace fs = std::filesystem;

@@ -9,6 +9,7 @@
 
 #include "picdem/core/error.hpp"
 #include "picdem/core/log.hpp"
+#include "picdem_version.hpp"  // generated at build time (cmake/git_version.cmake)
 
 #ifndef PICDEM_CODE_VERSION
 #define PICDEM_CODE_VERSION "unknown"
