@@ -135,9 +135,11 @@ the value and what is allowed, when:
 - an obstacle lies wholly outside the tank (it would cut no cell: a coordinate with the wrong
   sign, a tank shortened by an override), or a perforated fall pipe has more than 10,000 holes
   per wall (`top` - `bottom` over `hole_spacing`: a mistyped height);
-- with water, a solid spans less than one cell in both x and z (`grid/cell_size`): it can lie
-  inside one cell and cut no cell face, so the pressure equation would not see it (a radius typed
-  in mm as m); dry runs are not checked, their grid holds nothing of the solids;
+- with water, a solid or an obstacle is less than one cell (`grid/cell_size`) across at its
+  narrowest (its convex hull's width over all directions): lying between two grid lines it closes
+  no cell face across that width and the water flows through it (a plate thinner than a cell), or,
+  narrower than a cell both ways, the pressure equation does not see it at all (a radius typed in
+  mm as m); dry runs are not checked, their grid holds nothing of the solids;
 - `fluid/viscosity` is more than any step can carry: with the explicit scheme its stable step
   h^2 / (4 nu) is below `time/dt_min`; with the implicit ones the viscous number
   nu `time/dt_max` / h^2 exceeds 1e12, where the solve's mass term is lost to round-off;
