@@ -120,57 +120,57 @@ TEST(OpenChannel, ZeroGradientOutflowReachesPoiseuille) {
   channel_reaches_poiseuille({"open/right/outflow_velocity=zero_gradient"}, true);
 }
 
-TEST(OpenChannel, FillAndDrainVolumeBalance) {
+namespace {
+
+/// Runs cases/hydrostatic_tank with `overrides` to time/end and returns the largest
+/// |V - V0 - in + out| / V0 over the steps (V0 the seeded water), printing it with the end's
+/// volumes under `label`; `in`, `out` the end's volumes.
+double worst_volume_balance(const std::string& label, const std::vector<std::string>& overrides,
+                            double& in, double& out) {
   core::Comm comm(MPI_COMM_WORLD);
-  const auto params = test_support::load_case(
-      comm, "cases/hydrostatic_tank/case.yaml",
-      {"open/left/type=inflow", "open/left/range=[0.0, 0.05]", "open/left/velocity=0.1",
-       "open/right/type=outflow", "open/right/range=[0.0, 0.01]", "time/end=0.5"});
-  test_support::print_resolution(comm, "fill and drain (hydrostatic_tank)", params);
+  const auto params = test_support::load_case(comm, "cases/hydrostatic_tank/case.yaml", overrides);
+  test_support::print_resolution(comm, label + " (hydrostatic_tank)", params);
   coupling::Simulation sim(comm, params);
   const double V0 = params.real("grid/length") * params.real("water/still/z");  // the seeded water
   double worst = 0.0;
   while (sim.time() < params.real("time/end") - 1e-9) {
     sim.step();
     const auto& g = sim.diagnostics();
-    const double in = g.open_volumes[0], out = g.open_volumes[1];
-    if (in > 0.0) worst = std::max(worst, std::abs(g.fluid_volume - (V0 + in - out)) / V0);
+    if (g.open_volumes[0] > 0.0)
+      worst = std::max(
+          worst, std::abs(g.fluid_volume - (V0 + g.open_volumes[0] - g.open_volumes[1])) / V0);
   }
   const auto& g = sim.diagnostics();
-  const double in = g.open_volumes[0], out = g.open_volumes[1];
+  in = g.open_volumes[0], out = g.open_volumes[1];
   if (comm.is_root())
     std::printf(
-        "fill and drain at t = %.3f s: V0 %.6e, in %.6e, out %.6e, V %.6e m^2, V0 + in - out "
-        "%.6e; largest |V - V0 - in + out| / V0 over the run %.3e\n",
-        sim.time(), V0, in, out, g.fluid_volume, V0 + in - out, worst);
+        "%s at t = %.3f s: V0 %.6e, in %.6e, out %.6e, V %.6e m^2, V0 + in - out %.6e; largest "
+        "|V - V0 - in + out| / V0 over the run %.3e\n",
+        label.c_str(), sim.time(), V0, in, out, g.fluid_volume, V0 + in - out, worst);
+  return worst;
+}
+
+}  // namespace
+
+TEST(OpenChannel, FillAndDrainVolumeBalance) {
+  double in = 0.0, out = 0.0;
+  const double worst = worst_volume_balance(
+      "fill and drain",
+      {"open/left/type=inflow", "open/left/range=[0.0, 0.05]", "open/left/velocity=0.1",
+       "open/right/type=outflow", "open/right/range=[0.0, 0.01]", "time/end=0.5"},
+      in, out);
   EXPECT_GT(out, 0.1 * in);  // both sides carry flow
   EXPECT_LT(worst, 0.01);
 }
 
 TEST(OpenChannel, OverfallVolumeBalance) {
-  core::Comm comm(MPI_COMM_WORLD);
-  const auto params = test_support::load_case(
-      comm, "cases/hydrostatic_tank/case.yaml",
+  double in = 0.0, out = 0.0;
+  const double worst = worst_volume_balance(
+      "overfall, 0.6 m long",
       {"grid/length=0.6", "grid/cell_size=0.004", "open/left/type=inflow",
        "open/left/range=[0.0, 0.1]", "open/left/velocity=0.2", "open/right/type=outflow",
-       "open/right/range=[0.0, 0.12]", "particles/min_per_cell=0", "time/end=0.5"});
-  test_support::print_resolution(comm, "overfall (hydrostatic_tank, 0.6 m)", params);
-  coupling::Simulation sim(comm, params);
-  const double V0 = params.real("grid/length") * params.real("water/still/z");  // the seeded water
-  double worst = 0.0;
-  while (sim.time() < params.real("time/end") - 1e-9) {
-    sim.step();
-    const auto& g = sim.diagnostics();
-    worst = std::max(worst,
-                     std::abs(g.fluid_volume - (V0 + g.open_volumes[0] - g.open_volumes[1])) / V0);
-  }
-  const auto& g = sim.diagnostics();
-  const double in = g.open_volumes[0], out = g.open_volumes[1];
-  if (comm.is_root())
-    std::printf(
-        "overfall at t = %.3f s: V0 %.6e, in %.6e, out %.6e, V %.6e m^2, V0 + in - out %.6e; "
-        "largest |V - V0 - in + out| / V0 over the run %.3e\n",
-        sim.time(), V0, in, out, g.fluid_volume, V0 + in - out, worst);
+       "open/right/range=[0.0, 0.12]", "particles/min_per_cell=0", "time/end=0.5"},
+      in, out);
   EXPECT_GT(out, in);  // the water falls over the brink faster than it comes in
   EXPECT_LT(worst, 0.01);
 }
