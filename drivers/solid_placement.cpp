@@ -337,7 +337,7 @@ double narrowest_width(const Outline& o) {
 
 // With water, a solid or obstacle thinner than a cell can lie between two grid lines across its
 // thickness and close no cell face there: the pressure equation would let the water through it
-// (a plate 0.5 mm thick in 2 mm cells sank in bursts, its speed dropping sixfold each time it
+// (a plate 0.5 mm thick in 2 mm cells sank in bursts, its speed dropping sevenfold each time it
 // crossed a grid line), and one narrower than a cell both ways would not be seen at all (a radius
 // typed in mm as m, or a grid far too coarse). Widths are the convex hull's: a thin arm of a
 // non-convex polygon is not caught. Dry runs use the grid for nothing of the solids.
