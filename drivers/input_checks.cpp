@@ -116,12 +116,20 @@ the value and what is allowed, when:
   a `solids` or `water` entry has an unknown `type`; a vertex list is odd, too short, clockwise
   or not simple (the builder's message, prefixed with `solids/NAME`);
 - a solid's outline reaches outside the tank (`grid/origin`, `grid/length`, `grid/height`): its
-  exact extent (support points of its segments and arcs) is compared with the walls; touching a
-  wall is allowed;
-- two solids, or a solid and an obstacle polygon, overlap. The rule: real boundaries may touch
-  (distance >= 0), so the shipped cylinder stacks, placed at exactly the DEM gap from each other
-  and the walls, pass. Solids are named by their entry and id (`solids/stack[4] (id 4)`, the k-th
-  shape of a generator), obstacles by their entry. The depth is exact: two circles,
+  exact extent (support points of its segments and arcs) is compared with the walls;
+- a solid lies closer to a tank wall, another solid or an obstacle than the DEM's contact gap
+  (`dem/gap_cells` x `grid/cell_size`, eq. 19) less `dem/theta` cells: the contact spring, which
+  starts at the gap, would start compressed by the gap less the distance, that many times
+  (theta cells) the heaviest solid's weight, and throw the bodies apart at the first step (a
+  disk placed on the floor with the defaults starts under 200 weights: with water a particle
+  reached 19 m/s in the first step, dry the disk jumped 8.6 cm). The message gives the distance,
+  the compression and the distance allowed. The shipped cylinder stacks and packings place their
+  solids exactly the gap apart, and pass; a resting contact, pressed by theta cells per weight
+  it carries, is let through up to one weight. Distances are exact: two circles, d - r_a - r_b;
+  other outlines, the closest points of their segments and arcs; a wall, the support point;
+- two solids, or a solid and an obstacle polygon, overlap. Solids are named by their entry and
+  id (`solids/stack[4] (id 4)`, the k-th shape of a generator), obstacles by their entry. The
+  depth is exact: two circles,
   r_a + r_b - d; other convex outlines (polygons, rounded polygons, ellipses' arc splines, and
   circles against them), the shortest translation that separates them, from the support functions
   of their segments and arcs (geometry/overlap.hpp); a non-convex polygon (a solid or an

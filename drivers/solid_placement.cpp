@@ -199,23 +199,28 @@ std::string fmt(double v) {
   return s.str();
 }
 
-std::string overlap_message(const Outline& a, const Outline& b, double depth) {
+std::string overlap_message(const Outline& a, const Outline& b, double depth, double allowed) {
   return a.what + " and " + b.what + " overlap by " + fmt(depth) +
-         " m; allowed: real boundaries apart or touching (distance >= 0)";
+         " m; allowed: real boundaries at least " + fmt(allowed) +
+         " m apart (the DEM's contact gap less dem/theta cells)";
 }
 
-/// Calls f(i, j) once for every pair i < j of outlines whose boxes overlap, through a grid of
-/// buckets of the median solid size (at most about 4 buckets per solid): a pair is visited in the
-/// bucket holding the low corner of its boxes' intersection.
-void box_pairs(const std::vector<Outline>& s,
+core::Box2 grown(const core::Box2& b, double by) {
+  return {{b.lo.x - by, b.lo.z - by}, {b.hi.x + by, b.hi.z + by}};
+}
+
+/// Calls f(i, j) once for every pair i < j of boxes that overlap, through a grid of buckets of
+/// the median box size (at most about 4 buckets per box): a pair is visited in the bucket holding
+/// the low corner of the boxes' intersection.
+void box_pairs(const std::vector<core::Box2>& s,
                const std::function<void(std::size_t, std::size_t)>& f) {
   if (s.size() < 2) return;
-  core::Box2 all = s[0].box;
+  core::Box2 all = s[0];
   std::vector<double> sizes;
-  for (const auto& o : s) {
-    all.lo = {std::min(all.lo.x, o.box.lo.x), std::min(all.lo.z, o.box.lo.z)};
-    all.hi = {std::max(all.hi.x, o.box.hi.x), std::max(all.hi.z, o.box.hi.z)};
-    sizes.push_back(o.size());
+  for (const auto& b : s) {
+    all.lo = {std::min(all.lo.x, b.lo.x), std::min(all.lo.z, b.lo.z)};
+    all.hi = {std::max(all.hi.x, b.hi.x), std::max(all.hi.z, b.hi.z)};
+    sizes.push_back(std::max(b.hi.x - b.lo.x, b.hi.z - b.lo.z));
   }
   std::nth_element(sizes.begin(), sizes.begin() + sizes.size() / 2, sizes.end());
   const double w = all.hi.x - all.lo.x, hgt = all.hi.z - all.lo.z;
@@ -227,15 +232,15 @@ void box_pairs(const std::vector<Outline>& s,
   auto iz = [&](double z) { return std::clamp(static_cast<int>((z - all.lo.z) / c), 0, nz - 1); };
   std::vector<std::vector<std::size_t>> buckets(static_cast<std::size_t>(nx) * nz);
   for (std::size_t n = 0; n < s.size(); ++n)
-    for (int k = iz(s[n].box.lo.z); k <= iz(s[n].box.hi.z); ++k)
-      for (int i = ix(s[n].box.lo.x); i <= ix(s[n].box.hi.x); ++i)
+    for (int k = iz(s[n].lo.z); k <= iz(s[n].hi.z); ++k)
+      for (int i = ix(s[n].lo.x); i <= ix(s[n].hi.x); ++i)
         buckets[static_cast<std::size_t>(k) * nx + i].push_back(n);
   for (int k = 0; k < nz; ++k)
     for (int i = 0; i < nx; ++i) {
       const auto& b = buckets[static_cast<std::size_t>(k) * nx + i];
       for (std::size_t p = 0; p < b.size(); ++p)
         for (std::size_t q = p + 1; q < b.size(); ++q) {
-          const core::Box2 &u = s[b[p]].box, &v = s[b[q]].box;
+          const core::Box2 &u = s[b[p]], &v = s[b[q]];
           if (!u.overlaps(v)) continue;
           if (ix(std::max(u.lo.x, v.lo.x)) != i || iz(std::max(u.lo.z, v.lo.z)) != k) continue;
           f(std::min(b[p], b[q]), std::max(b[p], b[q]));
@@ -254,8 +259,8 @@ void check_in_tank(const core::Box2& tank, const std::vector<Outline>& solids,
                      fmt(s.box.hi.x) + "], z in [" + fmt(s.box.lo.z) + ", " + fmt(s.box.hi.z) +
                      "]; allowed: inside the tank x in [" + fmt(tank.lo.x) + ", " + fmt(tank.hi.x) +
                      "], z in [" + fmt(tank.lo.z) + ", " + fmt(tank.hi.z) +
-                     "] (grid/origin, grid/length, grid/height), touching a wall "
-                     "at most");
+                     "] (grid/origin, grid/length, grid/height), and the DEM's contact gap "
+                     "from each wall");
   }
 }
 
@@ -355,6 +360,57 @@ void check_resolved(double h, const std::vector<Outline>& outlines,
   }
 }
 
+/// Solids start force-free only when their real boundaries lie at least the DEM's imaginary gap
+/// apart (eq. 19: the contact spring starts at the gap). Closer, the spring starts compressed by
+/// gap - distance, which eq. 10's stiffness (the heaviest solid's weight presses a contact by
+/// theta cells) turns into that many weights: a disk placed on the floor with the default gap of
+/// 2 cells and theta 0.01 starts under 200 weights. With water the first step blew up (a particle
+/// at 19 m/s at step 1, 2 mm cells); dry, the solid is thrown up. A compression up to theta cells
+/// (the heaviest weight, what a resting contact carries) is let through.
+struct ContactGap {
+  double gap = 0.0;    ///< dem/gap_cells x grid/cell_size [m]
+  double press = 0.0;  ///< dem/theta x grid/cell_size: one heaviest weight's compression [m]
+  double allowed() const { return gap - press; }
+};
+
+ContactGap contact_gap_of(const core::Params& params) {
+  const double h = params.real("grid/cell_size");
+  return {params.real("dem/gap_cells") * h, params.real("dem/theta") * h};
+}
+
+std::string gap_message(const std::string& a, const std::string& b, double distance,
+                        const ContactGap& g) {
+  return a + " and " + b + " are " + fmt(distance) + " m apart, inside the contact gap " +
+         fmt(g.gap) +
+         " m (dem/gap_cells x grid/cell_size, eq. 19): their contact would start compressed by " +
+         fmt(g.gap - distance) + " m, " + fmt((g.gap - distance) / g.press) +
+         " times what the heaviest solid's weight presses (dem/theta x grid/cell_size = " +
+         fmt(g.press) + " m, eq. 10), and throw them apart at the first step; allowed: at least " +
+         fmt(g.allowed()) +
+         " m apart (the gap less dem/theta cells), as the cylinder stacks and packings place "
+         "them";
+}
+
+/// The distance between the real boundaries of two outlines that do not overlap [m].
+double distance_apart(const Outline& a, const Outline& b) {
+  if (a.circle_radius > 0.0 && b.circle_radius > 0.0)
+    return core::norm(a.centre - b.centre) - a.circle_radius - b.circle_radius;
+  return dem::closest_points(a.world, b.world).distance;
+}
+
+void check_wall_gaps(const core::Box2& tank, const std::vector<Outline>& solids,
+                     const ContactGap& g, std::vector<std::string>& errors) {
+  static const char* names[4] = {"left", "right", "bottom", "top"};
+  for (const auto& s : solids) {
+    const double d[4] = {s.box.lo.x - tank.lo.x, tank.hi.x - s.box.hi.x, s.box.lo.z - tank.lo.z,
+                         tank.hi.z - s.box.hi.z};
+    for (int k = 0; k < 4; ++k)
+      if (d[k] >= 0.0 && d[k] < g.allowed())
+        errors.push_back(
+            gap_message(s.what, std::string("the tank's ") + names[k] + " wall", d[k], g));
+  }
+}
+
 core::Box2 tank_of(const core::Params& params) {
   const auto o = params.reals("grid/origin");
   return {{o[0], o[1]}, {o[0] + params.real("grid/length"), o[1] + params.real("grid/height")}};
@@ -377,18 +433,25 @@ std::vector<std::string> check_solid_placement(const core::Params& params,
     check_resolved(params.real("grid/cell_size"), solids, errors);
     check_resolved(params.real("grid/cell_size"), obstacles, errors);
   }
-  box_pairs(solids, [&](std::size_t i, std::size_t j) {
-    const double depth = overlap_depth(solids[i], solids[j]);
-    if (depth > 1e-9 * std::max(solids[i].size(), solids[j].size()))
-      errors.push_back(overlap_message(solids[i], solids[j], depth));
-  });
-  for (const auto& s : solids)
-    for (const auto& ob : obstacles) {
-      if (!s.box.overlaps(ob.box)) continue;
-      const double depth = overlap_depth(s, ob);
-      if (depth > 1e-9 * std::max(s.size(), ob.size()))
-        errors.push_back(overlap_message(s, ob, depth));
+  const ContactGap g = contact_gap_of(params);
+  check_wall_gaps(tank, solids, g, errors);
+  // Overlaps first; pairs apart but inside the gap next (boxes grown by half the gap each).
+  const auto check_pair = [&](const Outline& a, const Outline& b) {
+    const double depth = overlap_depth(a, b);
+    if (depth > 1e-9 * std::max(a.size(), b.size())) {
+      errors.push_back(overlap_message(a, b, depth, g.allowed()));
+      return;
     }
+    const double d = std::max(0.0, distance_apart(a, b));
+    if (d < g.allowed()) errors.push_back(gap_message(a.what, b.what, d, g));
+  };
+  std::vector<core::Box2> boxes;
+  boxes.reserve(solids.size());
+  for (const auto& s : solids) boxes.push_back(grown(s.box, 0.5 * g.gap));
+  box_pairs(boxes, [&](std::size_t i, std::size_t j) { check_pair(solids[i], solids[j]); });
+  for (std::size_t i = 0; i < solids.size(); ++i)
+    for (const auto& ob : obstacles)
+      if (boxes[i].overlaps(grown(ob.box, 0.5 * g.gap))) check_pair(solids[i], ob);
   if (errors.size() > max_messages) {
     const std::size_t more = errors.size() - max_messages;
     errors.resize(max_messages);
