@@ -1,5 +1,7 @@
 #include "picdem/coupling/schema.hpp"
 
+#include <sstream>
+
 #include "picdem/dem/parameters.hpp"
 #include "picdem/fluid/fluid.hpp"
 #include "picdem/fluid/time_step.hpp"
@@ -13,6 +15,13 @@
 namespace picdem::coupling {
 
 namespace {
+
+std::string vector_text(const std::vector<double>& v) {
+  std::ostringstream o;
+  o << '[';
+  for (std::size_t k = 0; k < v.size(); ++k) o << (k ? ", " : "") << v[k];
+  return o.str() + ']';
+}
 
 // The case's name (the time step's keys are fluid's: fluid/time_step.hpp).
 void declare_case(core::ParamSchema& s) {
@@ -47,9 +56,10 @@ void declare_coupling(core::ParamSchema& s) {
   s.check([](const core::Params& p, std::vector<std::string>& errors) {
     if (!p.sublist_names("water").empty() && !p.sublist_names("solids").empty() &&
         p.reals("dem/gravity") != p.reals("fluid/gravity"))
-      errors.push_back(
-          "keys 'dem/gravity' and 'fluid/gravity' differ; with water and solids in "
-          "one case they must be the same");
+      errors.push_back("keys 'dem/gravity' = " + vector_text(p.reals("dem/gravity")) +
+                       " and 'fluid/gravity' = " + vector_text(p.reals("fluid/gravity")) +
+                       " differ; with water and solids in one case they must be the same: set "
+                       "both (each defaults to [0, -9.81])");
   });
 }
 
