@@ -148,6 +148,27 @@ void log_transfer_viscosity(const picdem::core::Comm& comm, const picdem::coupli
   picdem::core::log(comm, line + "; doc/particles.md");
 }
 
+// The explicit viscous scheme gives the bodies no viscous load (doc/viscous.md, "In the step"):
+// with a fluid more viscous than water and solids or obstacles in it, a run whose forces.csv
+// shows zero viscous columns says so. A disk spinning at 20 rad/s in nu = 1e-2 m^2/s kept 99.8% of
+// its spin over 0.3 s; the implicit scheme took it to 0.33 rad/s in 0.1 s.
+void log_viscous_loads(const picdem::core::Comm& comm, const picdem::coupling::Simulation& sim,
+                       const picdem::core::Params& params) {
+  constexpr double water = 1e-6;  // m^2/s, the default: the paper's setting
+  const double nu = params.real("fluid/viscosity");
+  if (!sim.has_fluid() || params.string("fluid/viscosity_scheme") != "explicit" || nu <= water)
+    return;
+  if (params.sublist_names("solids").empty() && params.sublist_names("obstacles").empty()) return;
+  char text[480];
+  std::snprintf(text, sizeof text,
+                "picdem: fluid/viscosity = %.3g m^2/s (water: 1e-6) with fluid/viscosity_scheme = "
+                "explicit: solids and obstacles feel the pressure only, no viscous force or "
+                "torque (forces.csv's viscous columns stay 0); fluid/viscosity_scheme: implicit "
+                "adds them with no-slip at their true boundary (doc/viscous.md)",
+                nu);
+  picdem::core::log(comm, text);
+}
+
 // Runs the case (after the parameters are read); the log and run.yaml from the moment the output
 // folder is known.
 int run_case(const picdem::core::Comm& comm, const Args& args, const picdem::core::Params& params,
@@ -168,6 +189,7 @@ int run_case(const picdem::core::Comm& comm, const Args& args, const picdem::cor
   }
   log_solids(comm, *run.sim, params);
   log_transfer_viscosity(comm, *run.sim, params);
+  log_viscous_loads(comm, *run.sim, params);
   run.steps = std::make_unique<picdem::run::Run>(*run.sim);
   if (from.empty())
     run.steps->open_output(out);
