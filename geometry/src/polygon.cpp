@@ -204,8 +204,11 @@ ShapeType polygon_file_type() {
   t.name = "polygon_file";
   t.doc = "a polygon read from a vertex file (one 'x z' per line)";
   t.declare = [](core::ParamSchema& v) {
-    v.string("file", "", {}, "vertex file, counter-clockwise, world coordinates at theta = 0")
-        .is_required();
+    v.string("file", "", {},
+             "vertex file, counter-clockwise, world coordinates at theta = 0; a relative path is "
+             "the case file's folder's (given with --set: the working directory's)")
+        .is_required()
+        .is_file_path();
     v.reals("offset", {0.0, 0.0}, "shift (x, z) added to every vertex [m]").size(2, 2);
     declare_theta(v);
   };

@@ -196,10 +196,16 @@ void apply_override(ParameterList& list, const std::string& assignment) {
 }
 
 Params read_case_text(const std::string& text, const std::string& source,
-                      const std::vector<std::string>& overrides, const ParamSchema& schema) {
+                      const std::vector<std::string>& overrides, const ParamSchema& schema,
+                      const std::string& case_dir) {
   auto list = parse_yaml(text, source);
-  for (const auto& o : overrides) apply_override(*list, o);
-  return schema.resolve(*list, overrides.empty() ? source : source + " (with --set overrides)");
+  ParamSchema::FileBase files{case_dir, {}};
+  for (const auto& o : overrides) {
+    apply_override(*list, o);
+    files.overridden.push_back(o.substr(0, o.find('=')));
+  }
+  return schema.resolve(*list, overrides.empty() ? source : source + " (with --set overrides)",
+                        files);
 }
 
 Params resolve_written_case(const std::string& yaml, const std::string& source,
@@ -242,7 +248,10 @@ Params read_case(const Comm& comm, const std::string& path,
   problem = comm.broadcast(problem);
   if (!problem.empty()) throw InputError(problem);
   text = comm.broadcast(text);
-  return read_case_text(text, file, overrides, schema);
+  // Relative file paths in the case are the case file's folder's (on every rank the same text).
+  const std::string case_dir = comm.broadcast(
+      comm.is_root() ? std::filesystem::absolute(file).parent_path().string() : std::string());
+  return read_case_text(text, file, overrides, schema, case_dir);
 }
 
 }  // namespace picdem::core

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <optional>
 #include <set>
@@ -31,6 +32,17 @@ struct SchemaResolver {
   const ParamSchema& schema;
   std::string prefix;  // path of this schema inside the case ("" or "obstacles/pipe/")
   std::vector<std::string>& errors;
+  const ParamSchema::FileBase& files;
+
+  // A file key's value made absolute (ParamSchema::FileBase); as written without a case folder.
+  std::string file_value(const std::string& full_path, const std::string& v) const {
+    namespace fs = std::filesystem;
+    if (files.case_dir.empty() || v.empty() || fs::path(v).is_absolute()) return v;
+    const bool from_command_line = std::find(files.overridden.begin(), files.overridden.end(),
+                                             full_path) != files.overridden.end();
+    const fs::path base = from_command_line ? fs::current_path() : fs::path(files.case_dir);
+    return (base / v).lexically_normal().string();
+  }
 
   const ParamDecl* decl(const std::string& path) const {
     for (const auto& d : schema.decls_)
@@ -159,7 +171,7 @@ struct SchemaResolver {
         if (!d.choices.empty() &&
             std::find(d.choices.begin(), d.choices.end(), v) == d.choices.end())
           return out_of_range("'" + v + "'");
-        out.set(name, v);
+        out.set(name, d.file_path ? file_value(prefix + d.path, v) : v);
         return;
       }
       case ParamKind::RealArray: {
@@ -232,7 +244,7 @@ struct SchemaResolver {
           }
           ParameterList stripped(member);
           stripped.remove("type");
-          SchemaResolver sub{*v->second, mpath + "/", errors};
+          SchemaResolver sub{*v->second, mpath + "/", errors, files};
           ParameterList& mout = fam_out.sublist(mname);
           mout.set("type", type);
           sub.walk(stripped, mout, "");
@@ -292,10 +304,11 @@ struct SchemaResolver {
   }
 };
 
-Params ParamSchema::resolve(const ParameterList& input, const std::string& source) const {
+Params ParamSchema::resolve(const ParameterList& input, const std::string& source,
+                            const FileBase& files) const {
   std::vector<std::string> errors;
   auto out = std::make_shared<ParameterList>("case");
-  SchemaResolver r{*this, "", errors};
+  SchemaResolver r{*this, "", errors, files};
   r.walk(input, *out, "");
   r.fill_defaults(input, *out);
   Params params(out);

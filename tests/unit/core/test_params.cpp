@@ -2,6 +2,8 @@
 // allowed, and is an InputError (the driver turns it into a non-zero exit, never a crash).
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include <Teuchos_ParameterList.hpp>
 #include "picdem/core/error.hpp"
 
@@ -24,6 +26,10 @@ ParamSchema schema() {
   auto& f = s.family("obstacles", "fixed obstacles");
   f.variant("box", "a box").reals("lo", {0, 0}, "low corner").size(2, 2);
   f.variant("box", "a box").reals("hi", {1, 1}, "high corner").size(2, 2);
+  f.variant("from_file", "an outline from a file")
+      .string("file", "", {}, "outline file")
+      .is_file_path();
+  s.string("input/table", "", {}, "a table file").is_file_path();
   s.check([](const Params& p, std::vector<std::string>& e) {
     if (p.real("fluid/density") > 5000) e.push_back("key 'fluid/density' too heavy for a fluid");
   });
@@ -113,6 +119,31 @@ TEST(Params, BlockListAtTheKeysIndentation) {
       error_of("grid:\n  origin:\n  - 0\n  - 0\ntime:\n  end: 1\n  x: \"a\" b\n");
   EXPECT_NE(msg.find("line 7"), std::string::npos) << msg;
 }
+// A case that names a file (a polygon's vertices) works from any working directory: the case
+// file's relative path is its folder's; one given by --set is the working directory's, as a shell
+// user means it; absolute paths and cases given as text (no folder) are kept as written.
+TEST(Params, FilePathsRelativeToTheCaseFile) {
+  const std::string text =
+      "time:\n  end: 1\ninput:\n  table: data/t.txt\nobstacles:\n  rock:\n    type: "
+      "from_file\n    file: ../shapes/rock.txt\n";
+  const auto p = read_case_text(text, "/runs/c/case.yaml", {}, schema(), "/runs/c");
+  EXPECT_EQ(p.string("input/table"), "/runs/c/data/t.txt");
+  EXPECT_EQ(p.string("obstacles/rock/file"), "/runs/shapes/rock.txt");
+
+  const auto cwd = std::filesystem::current_path();
+  const auto q = read_case_text(text, "/runs/c/case.yaml", {"obstacles/rock/file=r2.txt"}, schema(),
+                                "/runs/c");
+  EXPECT_EQ(q.string("obstacles/rock/file"), (cwd / "r2.txt").lexically_normal().string());
+  EXPECT_EQ(q.string("input/table"), "/runs/c/data/t.txt");
+
+  const auto a = read_case_text("time:\n  end: 1\ninput:\n  table: /abs/t.txt\n", "c.yaml", {},
+                                schema(), "/runs/c");
+  EXPECT_EQ(a.string("input/table"), "/abs/t.txt");
+  const auto t = read_case_text(text, "text", {}, schema());
+  EXPECT_EQ(t.string("input/table"), "data/t.txt");
+  EXPECT_EQ(t.string("fluid/walls"), "free_slip");  // other texts untouched
+}
+
 TEST(ParamsBad, LineNumbersCountTheJoinedLines) {
   // A flow list over three lines, then a bad line: the message names the file's line (7).
   const std::string msg =

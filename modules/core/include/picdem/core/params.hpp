@@ -37,6 +37,9 @@ struct ParamDecl {
   bool lo_open = false, hi_open = false;
   std::vector<std::string> choices;  ///< allowed strings (empty: any)
   int min_size = 0, max_size = 1 << 30;
+  /// A string naming a file: read_case makes a relative path absolute, against the case file's
+  /// folder when the case file gives it and against the working directory when --set does.
+  bool file_path = false;
 
   ParamDecl& at_least(double v) { return lo = v, lo_open = false, *this; }
   ParamDecl& greater_than(double v) { return lo = v, lo_open = true, *this; }
@@ -46,6 +49,7 @@ struct ParamDecl {
   ParamDecl& non_negative() { return at_least(0.0); }
   ParamDecl& is_required() { return required = true, *this; }
   ParamDecl& size(int min, int max) { return min_size = min, max_size = max, *this; }
+  ParamDecl& is_file_path() { return file_path = true, *this; }
 
   /// "integer", "real", "real array", ...
   std::string kind_name() const;
@@ -89,9 +93,18 @@ class ParamSchema {
   void section(const std::string& path, const std::string& doc);
   void check(ParamCheck c);
 
+  /// Where the relative paths of file keys (ParamDecl::is_file_path) are taken from: `case_dir`
+  /// for those the case file gives, the working directory for the keys in `overridden` (given by
+  /// --set). An empty case_dir leaves every path as written (a case given as text).
+  struct FileBase {
+    std::string case_dir;
+    std::vector<std::string> overridden;  ///< full key paths ("solids/rock/file")
+  };
+
   /// Validates `input` and returns it completed with defaults. Throws InputError listing every
   /// problem found. `where` prefixes key paths in messages (used for families).
-  Params resolve(const Teuchos::ParameterList& input, const std::string& source) const;
+  Params resolve(const Teuchos::ParameterList& input, const std::string& source,
+                 const FileBase& files = {}) const;
 
   /// The case-file reference as Markdown.
   std::string reference_markdown() const;
@@ -161,8 +174,10 @@ Params read_case(const Comm& comm, const std::string& file,
 Params resolve_written_case(const std::string& yaml, const std::string& source,
                             const ParamSchema& schema);
 
-/// Validates YAML text (for tests and tools): parse + overrides + resolve.
+/// Validates YAML text (for tests and tools): parse + overrides + resolve. A non-empty `case_dir`
+/// is the folder relative file paths are taken from (read_case: the case file's).
 Params read_case_text(const std::string& text, const std::string& source,
-                      const std::vector<std::string>& overrides, const ParamSchema& schema);
+                      const std::vector<std::string>& overrides, const ParamSchema& schema,
+                      const std::string& case_dir = "");
 
 }  // namespace picdem::core
