@@ -42,12 +42,14 @@ void Progress::report(double t, long long step, double dt, int solver_iterations
   if (!comm_.is_root()) return;
   const double now = wall_seconds();
   if (!force && now - wall_last_ < interval_) return;
+  if (force && step == last_step_) return;  // the closing call after this step's line
   wall_last_ = now;
-  const double done = (t - t_start_) / (t_end_ - t_start_);
+  last_step_ = step;
+  const double done = std::min(1.0, (t - t_start_) / (t_end_ - t_start_));
   const double elapsed = now - wall_start_;
   const double eta = done > 1e-9 ? elapsed * (1.0 - done) / done : -1.0;
   const int width = 20;
-  const int filled = static_cast<int>(width * std::min(1.0, std::max(0.0, done)));
+  const int filled = static_cast<int>(width * std::max(0.0, done) + 1e-9);
   char line[256];
   std::snprintf(
       line, sizeof line,

@@ -19,7 +19,9 @@ double wall_seconds();
 std::string format_duration(double seconds);
 
 /// A progress line on rank 0 with simulated time, step, dt, solver iterations and ETA, printed at
-/// most every `interval` wall seconds (and always on the first and last call).
+/// most every `interval` wall seconds (and always on the first and last call, the last unless it
+/// repeats the line just printed). The share done is capped at 100%: the last step may end past
+/// time/end (it is not shortened).
 class Progress {
  public:
   Progress(Comm comm, double t_start, double t_end, double interval_seconds);
@@ -29,6 +31,7 @@ class Progress {
   Comm comm_;
   double t_start_, t_end_, interval_;
   double wall_start_, wall_last_ = -1e300;
+  long long last_step_ = -1;  ///< the step of the last line printed
 };
 
 }  // namespace picdem::core
