@@ -125,8 +125,10 @@ the value and what is allowed, when:
   reached 19 m/s in the first step, dry the disk jumped 8.6 cm). The message gives the distance,
   the compression and the distance allowed. The shipped cylinder stacks and packings place their
   solids exactly the gap apart, and pass; a resting contact, pressed by theta cells per weight
-  it carries, is let through up to one weight. Distances are exact: two circles, d - r_a - r_b;
-  other outlines, the closest points of their segments and arcs; a wall, the support point;
+  it carries, is let through up to one weight. A generator's own `gap` key below that distance
+  is named as the cause (once, instead of every pair it places). Distances are exact: two
+  circles, d - r_a - r_b; other outlines, the closest points of their segments and arcs; a wall,
+  the support point;
 - two solids, or a solid and an obstacle polygon, overlap. Solids are named by their entry and
   id (`solids/stack[4] (id 4)`, the k-th shape of a generator), obstacles by their entry. The
   depth is exact: two circles,

@@ -434,6 +434,22 @@ std::vector<std::string> check_solid_placement(const core::Params& params,
     check_resolved(params.real("grid/cell_size"), obstacles, errors);
   }
   const ContactGap g = contact_gap_of(params);
+  // A generator told to leave a smaller gap than the contact's (cylinder_stack, graded_packing):
+  // its key is the cause, named once rather than through every pair it places too close.
+  const std::size_t before = errors.size();
+  for (const auto& name : params.sublist_names("solids")) {
+    const core::Params s = params.sub("solids/" + name);
+    if (!s.has("gap")) continue;
+    const double gap = s.real("gap");
+    if (gap > 0.0 && gap < g.allowed())
+      errors.push_back("key 'solids/" + name + "/gap' = " + fmt(gap) +
+                       " m is less than the DEM's contact gap " + fmt(g.gap) +
+                       " m (dem/gap_cells x grid/cell_size, eq. 19): the solids it places would "
+                       "start with their contacts compressed and be thrown apart at the first "
+                       "step; allowed: 0 (the contact gap, the default) or at least " +
+                       fmt(g.allowed()) + " m");
+  }
+  if (errors.size() > before) return errors;
   check_wall_gaps(tank, solids, g, errors);
   // Overlaps first; pairs apart but inside the gap next (boxes grown by half the gap each).
   const auto check_pair = [&](const Outline& a, const Outline& b) {
