@@ -169,28 +169,6 @@ void log_viscous_loads(const picdem::core::Comm& comm, const picdem::coupling::S
   picdem::core::log(comm, text);
 }
 
-// Water pushed by moving bodies crowds its particles in front of them and thins behind; with
-// the defaults (reseeding, no density correction) reseeding refills the thinned cells and the
-// water grows (doc/coupling.md, "Density correction"). A run with solids and those defaults says
-// so and names the settings the cylinder cases use. Measured on a 10 x 15 cm dam break against a
-// step and three bodies (h = 2.5 mm, 0.5 s): +8.0% with the defaults, -1.3% at worst with
-// reseeding off and the correction 1.0 every 2 steps.
-void log_volume_settings(const picdem::core::Comm& comm, const picdem::coupling::Simulation& sim,
-                         const picdem::core::Params& params) {
-  if (!sim.has_fluid() || params.sublist_names("solids").empty()) return;
-  if (params.integer("particles/min_per_cell") == 0 ||
-      params.real("free_surface/density_correction") > 0.0)
-    return;
-  picdem::core::log(
-      comm,
-      "picdem: note: solids in water with reseeding on (particles/min_per_cell > 0) and no "
-      "density correction: the water's volume can grow by several percent where the bodies "
-      "crowd the particles (+8% in 0.5 s for a dam break against a step and three bodies); "
-      "particles/min_per_cell: 0 with free_surface/density_correction: 1.0 and "
-      "density_correction_interval: 2, as the cylinder cases, kept it within 1.3% "
-      "(doc/coupling.md, \"Density correction\")");
-}
-
 // Runs the case (after the parameters are read); the log and run.yaml from the moment the output
 // folder is known.
 int run_case(const picdem::core::Comm& comm, const Args& args, const picdem::core::Params& params,
@@ -212,7 +190,6 @@ int run_case(const picdem::core::Comm& comm, const Args& args, const picdem::cor
   log_solids(comm, *run.sim, params);
   log_transfer_viscosity(comm, *run.sim, params);
   log_viscous_loads(comm, *run.sim, params);
-  log_volume_settings(comm, *run.sim, params);
   run.steps = std::make_unique<picdem::run::Run>(*run.sim);
   if (from.empty())
     run.steps->open_output(out);
