@@ -123,7 +123,8 @@ void mark_cells(const Layout& L, const StepSettings& set, const geometry::CutCel
   fluid.occupancy = occ.S;
   occ.current = false;  // the particles move before the next use
   fluid::mark_cells(occ.count, set.has_bodies ? &cut : nullptr, L.d, L.halo,
-                    set.surface.ghost_fluid, set.surface.theta_min, fluid);
+                    set.surface.ghost_fluid, set.surface.theta_min, set.surface.theta_open_length,
+                    fluid);
   // p = 0 on the outflow faces themselves (doc/open_boundaries.md)
   if (set.surface.ghost_fluid && set.fluid.open.any())
     fluid::open_surface_fractions(fluid.surface, set.fluid.open, L.d);

@@ -13,6 +13,10 @@ void declare_free_surface_parameters(core::ParamSchema& s) {
          "smallest distance fraction of a fluid-air face to the surface (ghost fluid)")
       .greater_than(0.0)
       .at_most(1.0);
+  s.boolean("free_surface/theta_open_length", false,
+            "on fluid-air faces a body or obstacle cuts (open length E < h), theta >= theta_min "
+            "h / E: the surface's gradient drives at most E / h of a full face's velocity "
+            "through a sliver (doc/coupling.md)");
   s.real("free_surface/density_correction", 0.0,
          "share of the particles' excess or missing density (S - 1) moved away each step, "
          "positions only (doc/coupling.md); 0: off")
@@ -27,6 +31,7 @@ FreeSurfaceConfig free_surface_config_from(const core::Params& params) {
   FreeSurfaceConfig c;
   c.ghost_fluid = params.string("free_surface/method") == "ghost_fluid";
   c.theta_min = params.real("free_surface/theta_min");
+  c.theta_open_length = params.boolean("free_surface/theta_open_length");
   c.density_relaxation = params.real("free_surface/density_correction");
   c.density_interval = params.integer("free_surface/density_correction_interval");
   return c;

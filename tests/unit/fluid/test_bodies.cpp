@@ -162,3 +162,36 @@ TEST(MixCutFaces, FluxPerLengthOfFluidAndSolid) {
       expect(f.w_old(i, k), e, U, 3.0, "w_old", i, k);
     }
 }
+
+// On a fluid-air face a body or obstacle cuts, theta >= theta_min h / E; full faces, closed
+// faces, faces already above the bound and faces off the surface (theta 1) keep theta. Open
+// lengths of the scene: FaceZ (1, 2..4) 0.5 h (the square), FaceZ (6, 1) 0.1 h and FaceX (6, 2)
+// 0.3 h (the block), FaceX (2, 2) closed, FaceZ (7, 3) full.
+TEST(OpenLengthSurfaceFractions, BoundOnCutFacesOnly) {
+  Scene s;
+  const auto& d = *s.d;
+  const double h = 0.1, theta_min = 0.05;
+  ASSERT_NEAR(s.cut.E_z(1, 3), 0.5 * h, 1e-12);
+  ASSERT_NEAR(s.cut.E_z(6, 1), 0.1 * h, 1e-12);
+  ASSERT_NEAR(s.cut.E_x(6, 2), 0.3 * h, 1e-12);
+  ASSERT_EQ(s.cut.E_x(2, 2), 0.0);
+  ASSERT_EQ(s.cut.E_z(7, 3), h);
+  fluid::SurfaceFractions t{grid::FaceField(d, Stagger::FaceX, 1.0),
+                            grid::FaceField(d, Stagger::FaceZ, 1.0)};
+  t.theta_z(1, 3) = theta_min;
+  t.theta_z(6, 1) = theta_min;
+  t.theta_x(6, 2) = 0.3;
+  t.theta_x(2, 2) = theta_min;
+  t.theta_z(7, 3) = theta_min;
+  fluid::open_length_surface_fractions(s.cut, theta_min, h, t);
+  EXPECT_NEAR(t.theta_z(1, 3), 0.1, 1e-12);  // 0.05 h / 0.5 h
+  EXPECT_NEAR(t.theta_z(6, 1), 0.5, 1e-12);  // 0.05 h / 0.1 h
+  EXPECT_EQ(t.theta_x(6, 2), 0.3);           // above 0.05 h / 0.3 h
+  EXPECT_EQ(t.theta_x(2, 2), theta_min);     // closed: no flux, no bound
+  EXPECT_EQ(t.theta_z(7, 3), theta_min);     // full face
+  for (int k = 0; k < 6; ++k)                // every other face kept its 1
+    for (int i = 0; i <= 8; ++i)
+      if (!((i == 6 && k == 2) || (i == 2 && k == 2))) {
+        EXPECT_EQ(t.theta_x(i, k), 1.0) << i << " " << k;
+      }
+}

@@ -16,10 +16,18 @@ namespace picdem::fluid {
 /// air otherwise. f.occupancy holds the particles' S (particles::occupancy) on entry and, with
 /// `cut`, is divided by the tent's open share (open_share_correction); phi = 1/2 - S. With `cut`,
 /// enclosed cut cells are wetted (wet_enclosed_cut_cells) and the cells forwarded; with
-/// `ghost_fluid`, the surface fractions are computed (theta >= theta_min).
+/// `ghost_fluid`, the surface fractions are computed (theta >= theta_min), with `cut` and
+/// `theta_open_length` bounded on cut faces (open_length_surface_fractions).
 void mark_cells(const grid::GridArray<int>& count, const geometry::CutCells* cut,
                 const grid::Decomposition& d, const grid::Halo& halo, bool ghost_fluid,
-                double theta_min, FluidState& f);
+                double theta_min, bool theta_open_length, FluidState& f);
+
+/// theta = max(theta, min(1, theta_min h / E)) on every fluid-air face a body or obstacle cuts
+/// (0 < E < h): the velocity the ghost-fluid gradient drives through the face is then at most
+/// E / h times what it drives through a full face (free_surface/theta_open_length,
+/// doc/coupling.md, "The free surface on cut faces").
+void open_length_surface_fractions(const geometry::CutCells& cut, double theta_min, double h,
+                                   SurfaceFractions& s);
 
 /// Air cut cells whose groups (connected through open faces) have only fluid or solid neighbours
 /// across open faces become fluid: a sliver of fluid without particles inside the water is not

@@ -28,7 +28,8 @@ namespace picdem::fluid {
 /// fluid/wall_right, fluid/wall_bottom, fluid/wall_top, fluid/viscosity_scheme, the solver/ keys,
 /// the viscous_solver/ keys (viscous_settings.hpp) and the open/ keys (open_boundary.hpp).
 void declare_parameters(core::ParamSchema& schema);
-/// Declares free_surface/method, free_surface/theta_min, free_surface/density_correction and
+/// Declares free_surface/method, free_surface/theta_min, free_surface/theta_open_length,
+/// free_surface/density_correction and
 /// free_surface/density_correction_interval (src/parameters.cpp).
 void declare_free_surface_parameters(core::ParamSchema& schema);
 
@@ -69,6 +70,7 @@ FluidConfig config_from(const core::Params& params);
 struct FreeSurfaceConfig {
   bool ghost_fluid = true;          ///< method ghost_fluid (else p = 0 at air cell centres)
   double theta_min = 0.01;          ///< theta_min
+  bool theta_open_length = false;   ///< theta_open_length (cut faces: theta >= theta_min h / E)
   double density_relaxation = 0.0;  ///< density_correction (0: off)
   long long density_interval = 1;   ///< density_correction_interval
   /// Whether the density is corrected at step `step`.
