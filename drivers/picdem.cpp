@@ -169,6 +169,24 @@ void log_viscous_loads(const picdem::core::Comm& comm, const picdem::coupling::S
   picdem::core::log(comm, text);
 }
 
+// The tank is a whole number of cells (grid::spec_from rounds grid/length and grid/height): a
+// length that is not says the tank's true size, as the shipped cases run at other cell sizes do
+// (0.286 m at 1.5 mm is 190.67 cells: the tank is 0.2865 m long).
+void log_grid_rounding(const picdem::core::Comm& comm, const picdem::core::Params& params) {
+  const double h = params.real("grid/cell_size");
+  for (const char* key : {"grid/length", "grid/height"}) {
+    const double asked = params.real(key), cells = asked / h;
+    const double n = std::round(cells);
+    if (std::abs(n * h - asked) <= 1e-9 * asked) continue;
+    char text[360];
+    std::snprintf(text, sizeof text,
+                  "picdem: %s = %.6g m is %.6g cells of grid/cell_size = %.6g m: the tank is %.0f "
+                  "cells, %.6g m (water, solids and obstacles keep their coordinates)",
+                  key, asked, cells, h, n, n * h);
+    picdem::core::log(comm, text);
+  }
+}
+
 // Runs the case (after the parameters are read); the log and run.yaml from the moment the output
 // folder is known.
 int run_case(const picdem::core::Comm& comm, const Args& args, const picdem::core::Params& params,
@@ -187,6 +205,7 @@ int run_case(const picdem::core::Comm& comm, const Args& args, const picdem::cor
     picdem::core::ScopedTimer timer("setup");  // grid, seeding, solids, solvers (timers.txt)
     run.sim = std::make_unique<picdem::coupling::Simulation>(comm, params);
   }
+  log_grid_rounding(comm, params);
   log_solids(comm, *run.sim, params);
   log_transfer_viscosity(comm, *run.sim, params);
   log_viscous_loads(comm, *run.sim, params);

@@ -1,5 +1,7 @@
 #include "picdem/run/run.hpp"
 
+#include <cstdio>
+
 #include "checkpoint_state.hpp"
 
 #include "picdem/core/log.hpp"
@@ -72,6 +74,17 @@ void Run::run(long long max_steps) {
   const core::Comm& comm = m.comm;
   const double t_end = m.params.real("time/end"), h = m.decomposition.spec().h;
   const bool grid_speed = m.params.string("time/cfl_speed") == "grid";  // the CFL speed's source
+  // A job script that always passes --restart latest meets its own finished run: said, not run.
+  if (restarted_ && sim_.time() >= t_end * (1.0 - 1e-12)) {
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "picdem: the checkpoint is at t = %.6g s (step %lld), at or past time/end = "
+                  "%.6g s: no step to run; --set time/end=T with T > %.6g continues it",
+                  sim_.time(), sim_.step_count(), t_end, sim_.time());
+    core::log(comm, text);
+    if (output_) output_->finish(sim_);
+    return;
+  }
   core::Progress progress(comm, sim_.time(), t_end, m.params.real("output/progress_seconds"));
   if (output_ && !restarted_) output_->frame(sim_, true);
   const io::CheckpointConfig& ck = checkpoint_;

@@ -4,8 +4,10 @@ usage: check_run_record.py OUTPUT_DIR RANKS CASE_FILE -- MPIEXEC... PICDEM
 OUTPUT_DIR is the fixture's run (its console output in OUTPUT_DIR.stdout). Asserted there: the log
 equals the console output line for line; run.yaml holds version, git hash, code version, host,
 ranks, decomposition (the cut lines against the checkpoint's blocks), start and end dates, wall time, steps, time and exit status consistent with
-the run (timeseries.csv, frame attributes, this machine). Then three more runs: a restart from the
-fixture's checkpoint appends to the log and records where it started; a restart from a missing
+the run (timeseries.csv, frame attributes, this machine). Then five more runs: a restart from the
+fixture's checkpoint appends to the log and records where it started; the finished fixture
+restarted as it stands runs no step and says so; a cell size that does not divide the tank
+says the tank's size in whole cells; a restart from a missing
 file (input error, exit 2) and a run that blows up (solver error, exit 3) each leave run.yaml with
 their status, exit code, message and steps, and the error line at the end of the log.
 """
@@ -98,6 +100,28 @@ check(r2["restarted_from"] == checkpoint and r2["first_step"] == r["steps"] and
       r2["steps"] == r["steps"] + 2 and r2["steps_this_run"] == 2 and r2["status"] == "completed",
       f"restart record {r2}")
 
+# The finished fixture restarted with its own time/end (a job script that always passes
+# --restart latest): no step, a note saying so, no progress line, exit 0.
+done = out + "_finished"
+shutil.rmtree(done, ignore_errors=True)
+shutil.copytree(out, done)
+code = run(ranks, done, "--restart", "latest")
+r5, tail = record(done), log_lines(done)[len(log_lines(out)):]
+check(code == 0 and r5["status"] == "completed" and r5["steps_this_run"] == 0 and
+      r5["steps"] == r["steps"], f"finished run restarted: exit {code}, record {r5}")
+check(any("no step to run" in line and "time/end" in line for line in tail),
+      f"no note that the checkpoint is at time/end: {tail}")
+check(not any(line.startswith("[") for line in tail), f"a progress line: {tail}")
+
+# A cell size that does not divide the tank: the log gives the tank's size in whole cells
+# (0.12 m / 0.0023 m = 52.17 cells: 52 cells, 0.1196 m).
+odd = out + "_odd_cells"
+shutil.rmtree(odd, ignore_errors=True)
+code = run(1, odd, "--set", "grid/cell_size=0.0023", "--max-steps", "1")
+notes = [line for line in log_lines(odd) if line.startswith("picdem: grid/length = 0.12 m")]
+check(code == 0 and len(notes) == 1 and "the tank is 52 cells, 0.1196 m" in notes[0],
+      f"odd cell size: exit {code}, notes {notes}")
+
 # A missing checkpoint: input error after the output folder is known.
 bad = out + "_input_error"
 shutil.rmtree(bad, ignore_errors=True)
@@ -120,4 +144,5 @@ check(log_lines(blown)[-1] == "picdem: the run stopped: " + (r4["message"] or ""
       "solver error not last in the log")
 
 finish(f"run.yaml and picdem.log: fixture ({r['steps']} steps on {ranks} ranks), restart "
-       f"(+2 steps), input error and blow-up at step {r4['steps']} recorded")
+       f"(+2 steps), finished run restarted (no step), odd cell size, input error and blow-up "
+       f"at step {r4['steps']} recorded")
